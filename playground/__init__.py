@@ -1,1 +1,47 @@
-"""playground: a 2D game-physics playground for force-driven player bodies."""
+"""playground: a 2D game-physics playground for force-driven player bodies, built on pymunk.
+
+The core imports pymunk and numpy only; the desktop view lives in ``playground.view``.
+"""
+
+from playground.forces import BodyForces, Category, ForceLedger, ForceSolver
+from playground.gravity import (
+    GravityField,
+    GravityRule,
+    Radial,
+    RotatingRoom,
+    Turn,
+    Uniform,
+    Zone,
+    Zones,
+)
+from playground.movers import Circle, Elevator, Mover, Sine, Spin, Waypoints, ring_room
+from playground.perception import PerceivedGravity, Perception
+from playground.world import Stage, StageTiming, World, WorldConfig
+
+__all__ = [
+    "BodyForces",
+    "Category",
+    "Circle",
+    "Elevator",
+    "ForceLedger",
+    "ForceSolver",
+    "GravityField",
+    "GravityRule",
+    "Mover",
+    "PerceivedGravity",
+    "Perception",
+    "Radial",
+    "RotatingRoom",
+    "Sine",
+    "Spin",
+    "Stage",
+    "StageTiming",
+    "Turn",
+    "Uniform",
+    "Waypoints",
+    "World",
+    "WorldConfig",
+    "Zone",
+    "Zones",
+    "ring_room",
+]

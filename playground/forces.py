@@ -1,0 +1,394 @@
+"""The force ledger and the reverse-integration force solver.
+
+pymunk integrates each dynamic body's velocity as ``v ← v·d + (g + F/m)·h`` (``d = damping**h``)
+and then solves contacts and joints by impulses. Knowing v before and after the step, the mass,
+gravity and every force we applied, the impulse the engine applied is what is left over::
+
+    J = m·(v₁ − d·v₀) − (m·g + F)·h          L = I·(ω₁ − d·ω₀) − T·h
+
+and the **engine force** is J/dt. Summed over substeps, read for every tracked body at once with
+``pymunk.batch`` and numpy. The **ledger** records the forces we apply by category, so that the
+**support force** (engine + the forces that stand in for contacts: hover, drive, grip) and the
+**specific force** (support / m: what an inner ear feels) come out right.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from enum import Enum
+
+import numpy as np
+import pymunk
+import pymunk.batch as batch
+from numpy.typing import NDArray
+
+from playground._batch import lookup, read_arbiters
+
+__all__ = ["BodyForces", "Category", "ForceLedger", "ForceSolver"]
+
+Vec = tuple[float, float]
+
+
+class Category(Enum):
+    """Why a force was applied; the solver keeps a sum per category.
+
+    PASSIVE: gravity and other fields. APPLIED: self-propulsion, scripted pushes — felt by nobody's
+    inner ear by convention. SUPPORT: forces that stand in for contacts (a hover spring, a driving
+    friction force, a grip) — they count in the support force.
+    """
+
+    PASSIVE = 0
+    APPLIED = 1
+    SUPPORT = 2
+
+
+class _Entry:
+    __slots__ = ("body", "fx", "fy", "parts", "torque")
+
+    def __init__(self, body: pymunk.Body) -> None:
+        self.body = body
+        self.fx = 0.0
+        self.fy = 0.0
+        self.torque = 0.0
+        self.parts = [0.0] * (2 * len(Category))
+
+
+class ForceLedger:
+    """Forces we put on bodies during one step, by body and category.
+
+    Forces are world vectors (N) at world points (m); the torque about the centre of gravity
+    follows. :meth:`flush` writes the totals to the bodies; it runs before every substep because
+    pymunk clears forces after integrating.
+
+    >>> body = pymunk.Body(2.0, 1.0)
+    >>> ledger = ForceLedger()
+    >>> ledger.add(body, (3.0, 0.0), point=(0.0, 1.0), category=Category.SUPPORT)
+    >>> ledger.flush()
+    >>> body.force, body.torque
+    (Vec2d(3.0, 0.0), -3.0)
+    """
+
+    __slots__ = ("_entries",)
+
+    def __init__(self) -> None:
+        self._entries: dict[int, _Entry] = {}
+
+    def add(
+        self,
+        body: pymunk.Body,
+        force: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Record ``force`` (N, world frame) on ``body`` at world ``point`` (m; default: its centre
+        of gravity)."""
+        fx, fy = float(force[0]), float(force[1])
+        if not (math.isfinite(fx) and math.isfinite(fy)):
+            raise ValueError(f"force: expected a finite 2-vector in newtons, got {force!r}")
+        entry = self._entries.get(body.id)
+        if entry is None:
+            entry = self._entries[body.id] = _Entry(body)
+        entry.fx += fx
+        entry.fy += fy
+        if point is not None:
+            c = body.local_to_world(body.center_of_gravity)
+            entry.torque += (point[0] - c.x) * fy - (point[1] - c.y) * fx
+        i = 2 * category.value
+        entry.parts[i] += fx
+        entry.parts[i + 1] += fy
+
+    def add_torque(self, body: pymunk.Body, torque: float, category: Category) -> None:
+        """Record a pure torque (N·m)."""
+        if not math.isfinite(torque):
+            raise ValueError(f"torque: expected a finite number in N·m, got {torque!r}")
+        entry = self._entries.get(body.id)
+        if entry is None:
+            entry = self._entries[body.id] = _Entry(body)
+        entry.torque += float(torque)
+
+    def flush(self) -> None:
+        """Write each body's total force and torque (replacing what it had)."""
+        for e in self._entries.values():
+            e.body.force = (e.fx, e.fy)
+            e.body.torque = e.torque
+
+    def clear(self) -> None:
+        self._entries.clear()
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def parts(self, body_id: int) -> list[float] | None:
+        """Per-category sums ``[px, py, ax, ay, sx, sy]`` for a body, or None if it got nothing."""
+        e = self._entries.get(body_id)
+        return None if e is None else e.parts
+
+    def total(self, body_id: int) -> tuple[float, float, float]:
+        """(fx, fy, torque) recorded for a body this step."""
+        e = self._entries.get(body_id)
+        return (0.0, 0.0, 0.0) if e is None else (e.fx, e.fy, e.torque)
+
+
+@dataclass(frozen=True, slots=True)
+class BodyForces:
+    """One tracked body's readings after a step (plain values, SI).
+
+    Attributes:
+        valid: False when the body was not integrated this step (asleep, or absent from the
+            space); the other fields then hold the last valid reading.
+        engine: force the engine applied (contacts + joints), N.
+        engine_torque: torque the engine applied, N·m.
+        support: engine + our SUPPORT forces (hover, drive, grip), N.
+        specific: support / m — what an accelerometer on the body reads, m/s².
+        passive: gravity and fields on the body, N.
+        applied: our APPLIED forces (self-propulsion, scripts), N.
+        contact: sum of the body's arbiter impulses / dt, N (NaN unless the split is on).
+        contact_normal / contact_friction: the contact force's normal and tangential parts, N.
+        constraint: engine − contact: what joints did, N (NaN unless the split is on).
+    """
+
+    valid: bool
+    engine: Vec
+    engine_torque: float
+    support: Vec
+    specific: Vec
+    passive: Vec
+    applied: Vec
+    contact: Vec
+    contact_normal: Vec
+    contact_friction: Vec
+    constraint: Vec
+
+
+def _vec(a: NDArray[np.float64]) -> Vec:
+    return (float(a[0]), float(a[1]))
+
+
+class ForceSolver:
+    """Engine forces of tracked dynamic bodies by reverse integration, vectorised over all.
+
+    Per step the world calls :meth:`before_step` (reads v₀, ω₀ and the forces about to be
+    integrated, straight from the engine), :meth:`after_substep` after each ``space.step`` and
+    :meth:`finish`. Reading v₀ just before the step means every step — even the first after a body
+    is added — has a reading; a body absent from either read, or asleep after the step (not
+    integrated), gets none and keeps its last values (``valid`` False).
+
+    Results are arrays with one row per tracked body, in :attr:`bodies` order.
+    """
+
+    def __init__(self, *, contact_split: bool = False, check_sleep: bool = False) -> None:
+        self.contact_split = contact_split
+        self.check_sleep = check_sleep
+        self.bodies: list[pymunk.Body] = []
+        self._keys = np.zeros(0, dtype=np.uintp)  # sorted body ids
+        self._key_row = np.zeros(0, dtype=np.intp)  # tracked index of each sorted id
+        self.mass = np.zeros(0)
+        self.moment = np.zeros(0)
+        n = 0
+        self.valid = np.zeros(n, dtype=bool)
+        self.engine = np.zeros((n, 2))
+        self.engine_torque = np.zeros(n)
+        self.support = np.zeros((n, 2))
+        self.specific = np.zeros((n, 2))
+        self.passive = np.zeros((n, 2))
+        self.applied = np.zeros((n, 2))
+        self.contact = np.full((n, 2), np.nan)
+        self.contact_normal = np.full((n, 2), np.nan)
+        self.constraint = np.full((n, 2), np.nan)
+        self._arb_buffer = batch.Buffer()
+        self._reset_step()
+
+    # -- membership -------------------------------------------------------------------------
+
+    def track(self, body: pymunk.Body) -> int:
+        """Start tracking a dynamic body; returns its row. Idempotent."""
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError("track: only dynamic bodies have engine forces to recover")
+        for i, b in enumerate(self.bodies):
+            if b is body:
+                return i
+        self.bodies.append(body)
+        grow = len(self.bodies)
+        for name in ("engine", "support", "specific", "passive", "applied"):
+            setattr(self, name, np.vstack([getattr(self, name), np.zeros((1, 2))]))
+        for name in ("contact", "contact_normal", "constraint"):
+            setattr(self, name, np.vstack([getattr(self, name), np.full((1, 2), np.nan)]))
+        self.engine_torque = np.append(self.engine_torque, 0.0)
+        self.valid = np.append(self.valid, False)
+        self._rebuild_keys()
+        return grow - 1
+
+    def untrack(self, body: pymunk.Body) -> None:
+        """Stop tracking a body (rows after it move up by one)."""
+        idx = next((i for i, b in enumerate(self.bodies) if b is body), None)
+        if idx is None:
+            return
+        del self.bodies[idx]
+        for name in (
+            "engine",
+            "support",
+            "specific",
+            "passive",
+            "applied",
+            "contact",
+            "contact_normal",
+            "constraint",
+            "engine_torque",
+            "valid",
+        ):
+            setattr(self, name, np.delete(getattr(self, name), idx, axis=0))
+        self._rebuild_keys()
+
+    def refresh_masses(self) -> None:
+        """Re-read mass (kg) and moment (kg·m²) of every tracked body (after a mass change)."""
+        self.mass = np.array([b.mass for b in self.bodies], dtype=np.float64)
+        self.moment = np.array([b.moment for b in self.bodies], dtype=np.float64)
+
+    def _rebuild_keys(self) -> None:
+        ids = np.array([b.id for b in self.bodies], dtype=np.uintp)
+        order = np.argsort(ids)
+        self._keys = ids[order]
+        self._key_row = order.astype(np.intp)
+        self.refresh_masses()
+
+    def row_of(self, body: pymunk.Body) -> int | None:
+        """The tracked row of a body, or None."""
+        return next((i for i, b in enumerate(self.bodies) if b is body), None)
+
+    # -- per step -------------------------------------------------------------------------------
+
+    def _reset_step(self) -> None:
+        n = len(self.bodies)
+        self._v0 = np.zeros((n, 3))
+        self._vsum = np.zeros((n, 3))
+        self._vlast = np.zeros((n, 3))
+        self._force = np.zeros((n, 3))
+        self._field = np.zeros((n, 2))
+        self._seen = np.zeros(n, dtype=bool)
+        self._contact_j = np.zeros((n, 2))
+        self._contact_jn = np.zeros((n, 2))
+
+    def _rows(self, ids: NDArray[np.uintp]) -> tuple[NDArray[np.intp], NDArray[np.intp]]:
+        """(tracked index, row) pairs for the tracked bodies present in ``ids``."""
+        hit = lookup(self._keys, ids)
+        rows = np.nonzero(hit >= 0)[0]
+        return self._key_row[hit[rows]], rows
+
+    def before_step(
+        self,
+        ids: NDArray[np.uintp],
+        state: NDArray[np.float64],
+        field: NDArray[np.float64] | None = None,
+    ) -> None:
+        """Take v₀, ω₀ and the forces about to be integrated from a batch read.
+
+        ``state`` columns: vx, vy, w, fx, fy, torque (see ``_batch.BodyRows``); ``field`` rows
+        (N) are the per-body gravity forces included in those forces.
+        """
+        self._reset_step()
+        tracked, rows = self._rows(ids)
+        if field is not None:
+            self._field[tracked] = field[rows]
+        self._v0[tracked] = state[rows, 0:3]
+        self._vlast[tracked] = state[rows, 0:3]
+        self._force[tracked] = state[rows, 3:6]
+        self._seen[tracked] = True
+
+    def after_substep(
+        self, space: pymunk.Space, ids: NDArray[np.uintp], vel: NDArray[np.float64], last: bool
+    ) -> None:
+        """Accumulate one substep: velocities now (``vel`` rows vx, vy, w), contact impulses."""
+        tracked, rows = self._rows(ids)
+        present = np.zeros(len(self.bodies), dtype=bool)
+        present[tracked] = True
+        self._seen &= present
+        if not last:
+            # Σ v_k over the substeps but the last, for the damping term (see finish()).
+            self._vsum[tracked] += vel[rows]
+        self._vlast[tracked] = vel[rows]
+        if self.contact_split:
+            self._accumulate_contacts(space)
+
+    def _accumulate_contacts(self, space: pymunk.Space) -> None:
+        pairs, data = read_arbiters(space, self._arb_buffer)
+        if len(pairs) == 0:
+            return
+        j = data[:, 0:2]
+        n = data[:, 2:4]
+        jn = n * np.einsum("ij,ij->i", j, n)[:, None]
+        for col, sign in ((0, 1.0), (1, -1.0)):  # body A received +J, body B −J
+            hit = lookup(self._keys, pairs[:, col])
+            arb = np.nonzero(hit >= 0)[0]
+            if len(arb):
+                idx = self._key_row[hit[arb]]
+                np.add.at(self._contact_j, idx, sign * j[arb])
+                np.add.at(self._contact_jn, idx, sign * jn[arb])
+
+    def finish(
+        self,
+        *,
+        dt: float,
+        substeps: int,
+        damping: float,
+        space_gravity: Vec,
+        ledger: ForceLedger,
+    ) -> None:
+        """Compute the readings of this step.
+
+        With n substeps of h = dt/n and per-substep velocity damping d = damping**h, summing the
+        per-substep impulses telescopes to
+        ``J = m·(v_n − v_0 + (1 − d)·Σ_{k<n} v_k) − (m·g + F)·dt``.
+        """
+        h = dt / substeps
+        d = damping**h
+        m = self.mass
+        inertia = self.moment
+        ok = self._seen.copy()
+        if self.check_sleep:
+            ok &= np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
+        dv = self._vlast - self._v0 + (1.0 - d) * (self._vsum + self._v0)
+        g = np.asarray(space_gravity, dtype=np.float64)
+        force = self._force
+        impulse = m[:, None] * dv[:, 0:2] - (m[:, None] * g + force[:, 0:2]) * dt
+        with np.errstate(invalid="ignore"):
+            ang = np.where(np.isinf(inertia), 0.0, inertia * dv[:, 2] - force[:, 2] * dt)
+
+        parts = np.zeros((len(self.bodies), 6))
+        for i, body in enumerate(self.bodies):
+            p = ledger.parts(body.id)
+            if p is not None:
+                parts[i] = p
+        ledger_total = parts[:, 0:2] + parts[:, 2:4] + parts[:, 4:6]
+        # Whatever was on the body but not in the ledger was put there by someone else: APPLIED.
+        unexplained = force[:, 0:2] - ledger_total - self._field
+
+        rows = np.nonzero(ok)[0]
+        self.valid = ok
+        self.engine[rows] = impulse[rows] / dt
+        self.engine_torque[rows] = ang[rows] / dt
+        self.passive[rows] = m[rows, None] * g + self._field[rows] + parts[rows, 0:2]
+        self.applied[rows] = parts[rows, 2:4] + unexplained[rows]
+        self.support[rows] = self.engine[rows] + parts[rows, 4:6]
+        self.specific[rows] = self.support[rows] / m[rows, None]
+        if self.contact_split:
+            self.contact[rows] = self._contact_j[rows] / dt
+            self.contact_normal[rows] = self._contact_jn[rows] / dt
+            self.constraint[rows] = self.engine[rows] - self.contact[rows]
+
+    def reading(self, row: int) -> BodyForces:
+        """The readings of one tracked row as plain values."""
+        return BodyForces(
+            valid=bool(self.valid[row]),
+            engine=_vec(self.engine[row]),
+            engine_torque=float(self.engine_torque[row]),
+            support=_vec(self.support[row]),
+            specific=_vec(self.specific[row]),
+            passive=_vec(self.passive[row]),
+            applied=_vec(self.applied[row]),
+            contact=_vec(self.contact[row]),
+            contact_normal=_vec(self.contact_normal[row]),
+            contact_friction=_vec(self.contact[row] - self.contact_normal[row]),
+            constraint=_vec(self.constraint[row]),
+        )

@@ -1,0 +1,299 @@
+"""Gravity fields: uniform, rotating rooms, radial planets and zones.
+
+A field answers one question, vectorised: what acceleration (m/s²) does it give at these points at
+time t? The world decides how to apply it: a field that is *uniform in space* becomes
+``space.gravity`` (Chipmunk's C path, no per-step Python per body); anything else becomes one
+vectorised force write per step. Per-body rules (scale, own direction) live in :class:`GravityRule`.
+
+>>> field = Uniform((0.0, -9.81))
+>>> field.at(np.zeros((2, 2)), t=0.0).tolist()
+[[0.0, -9.81], [0.0, -9.81]]
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import NDArray
+
+from playground._validate import finite, finite_vec, positive
+
+__all__ = [
+    "STANDARD_GRAVITY",
+    "GravityField",
+    "GravityRule",
+    "Radial",
+    "RotatingRoom",
+    "Turn",
+    "Uniform",
+    "Zone",
+    "Zones",
+]
+
+STANDARD_GRAVITY = 9.81
+"""Magnitude of Earth's surface gravity, m/s²."""
+
+Vec = tuple[float, float]
+Points = NDArray[np.float64]
+
+
+@runtime_checkable
+class GravityField(Protocol):
+    """What every field provides.
+
+    ``uniform`` is True when the field is the same at every point (it may still change in time);
+    the world then uses ``space.gravity`` instead of per-body forces.
+    """
+
+    @property
+    def uniform(self) -> bool: ...
+
+    def at(self, points: Points, t: float) -> Points:
+        """Acceleration in m/s² at ``points`` (shape (N, 2), metres) at time ``t`` (s)."""
+        ...
+
+
+@dataclass(frozen=True, slots=True)
+class Uniform:
+    """The same acceleration everywhere and always.
+
+    Attributes:
+        g: acceleration, m/s². Default: Earth's gravity pointing to −y.
+    """
+
+    g: Vec = (0.0, -STANDARD_GRAVITY)
+
+    def __post_init__(self) -> None:
+        finite_vec("g", self.g)
+
+    @property
+    def uniform(self) -> bool:
+        return True
+
+    def at(self, points: Points, t: float) -> Points:
+        return np.broadcast_to(np.asarray(self.g, dtype=np.float64), points.shape).copy()
+
+
+@dataclass(frozen=True, slots=True)
+class Turn:
+    """A scheduled rotation of a room's gravity direction.
+
+    The direction turns by ``angle`` (rad, counter-clockwise positive) between ``start`` and
+    ``start + duration`` (s), following a smoothstep so the turn starts and ends at rest.
+    ``duration = 0`` turns instantly. A flip is ``Turn(start, math.pi)``.
+    """
+
+    start: float
+    angle: float
+    duration: float = 0.0
+
+    def __post_init__(self) -> None:
+        finite("start", self.start)
+        finite("angle", self.angle)
+        if not (math.isfinite(self.duration) and self.duration >= 0.0):
+            raise ValueError(f"duration: expected a finite number >= 0 s, got {self.duration!r}")
+
+    def progress(self, t: float) -> float:
+        """Fraction of the turn done at time ``t`` (0 … 1), eased with a smoothstep.
+
+        >>> Turn(1.0, math.pi, 2.0).progress(2.0)
+        0.5
+        """
+        if t < self.start:
+            return 0.0
+        if self.duration == 0.0 or t >= self.start + self.duration:
+            return 1.0
+        s = (t - self.start) / self.duration
+        return s * s * (3.0 - 2.0 * s)
+
+
+@dataclass(frozen=True, slots=True)
+class RotatingRoom:
+    """Uniform gravity whose direction turns: at a constant rate, by scheduled turns, or both.
+
+    The direction at time t is ``angle + rate·t + Σ turn.angle·turn.progress(t)``, measured from +x
+    (so −π/2 is "down" on screen).
+
+    Attributes:
+        magnitude: |g|, m/s².
+        angle: direction at t = 0, rad.
+        rate: constant turning rate, rad/s.
+        turns: scheduled turns and flips.
+
+    >>> room = RotatingRoom(angle=-math.pi / 2, turns=(Turn(1.0, math.pi),))
+    >>> [round(float(c), 6) for c in room.vector(2.0)]
+    [0.0, 9.81]
+    """
+
+    magnitude: float = STANDARD_GRAVITY
+    angle: float = -math.pi / 2
+    rate: float = 0.0
+    turns: tuple[Turn, ...] = ()
+
+    def __post_init__(self) -> None:
+        finite("magnitude", self.magnitude)
+        finite("angle", self.angle)
+        finite("rate", self.rate)
+
+    @property
+    def uniform(self) -> bool:
+        return True
+
+    def direction(self, t: float) -> float:
+        """Direction of gravity at time ``t``, rad from +x."""
+        return (
+            self.angle + self.rate * t + sum(turn.angle * turn.progress(t) for turn in self.turns)
+        )
+
+    def vector(self, t: float) -> Vec:
+        """Gravity at time ``t``, m/s²."""
+        a = self.direction(t)
+        return (self.magnitude * math.cos(a), self.magnitude * math.sin(a))
+
+    def at(self, points: Points, t: float) -> Points:
+        return np.broadcast_to(np.asarray(self.vector(t)), points.shape).copy()
+
+
+@dataclass(frozen=True, slots=True)
+class Radial:
+    """Gravity toward a centre, like a small planet, softened near the centre.
+
+    ``g(r) = −g_surface·R²·r / (|r|² + ε²)^{3/2}``: equals ``g_surface`` at radius ``R`` (for ε ≪ R)
+    and stays finite at the centre (Plummer softening).
+
+    Attributes:
+        center: the planet's centre, m.
+        surface_gravity: |g| at ``radius``, m/s².
+        radius: the planet's radius, m.
+        softening: ε, m.
+
+    >>> planet = Radial(center=(0.0, 0.0), surface_gravity=9.81, radius=10.0, softening=0.0)
+    >>> planet.at(np.array([[0.0, 10.0], [20.0, 0.0]]), 0.0).round(4).tolist()
+    [[-0.0, -9.81], [-2.4525, -0.0]]
+    """
+
+    center: Vec = (0.0, 0.0)
+    surface_gravity: float = STANDARD_GRAVITY
+    radius: float = 10.0
+    softening: float = 0.5
+
+    def __post_init__(self) -> None:
+        finite_vec("center", self.center)
+        finite("surface_gravity", self.surface_gravity)
+        positive("radius", self.radius)
+        if not (math.isfinite(self.softening) and self.softening >= 0.0):
+            raise ValueError(f"softening: expected a finite number >= 0 m, got {self.softening!r}")
+
+    @property
+    def uniform(self) -> bool:
+        return False
+
+    def at(self, points: Points, t: float) -> Points:
+        r = points - np.asarray(self.center)
+        d2 = np.einsum("ij,ij->i", r, r) + self.softening**2
+        gm = self.surface_gravity * self.radius**2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            scale = np.where(d2 > 0.0, -gm / (d2 * np.sqrt(d2)), 0.0)
+        out: Points = r * scale[:, None]
+        return out
+
+
+@dataclass(frozen=True, slots=True)
+class Zone:
+    """A region with its own field: an axis-aligned box ``(x0, y0, x1, y1)`` in metres."""
+
+    box: tuple[float, float, float, float]
+    field: GravityField
+
+    def __post_init__(self) -> None:
+        x0, y0, x1, y1 = self.box
+        if not all(math.isfinite(v) for v in self.box) or x1 <= x0 or y1 <= y0:
+            raise ValueError(
+                f"box: expected finite (x0, y0, x1, y1) with x1 > x0 and y1 > y0, got {self.box!r}"
+            )
+
+    def contains(self, points: Points) -> NDArray[np.bool_]:
+        x0, y0, x1, y1 = self.box
+        x, y = points[:, 0], points[:, 1]
+        inside: NDArray[np.bool_] = (x >= x0) & (x <= x1) & (y >= y0) & (y <= y1)
+        return inside
+
+
+@dataclass(frozen=True, slots=True)
+class Zones:
+    """A base field with regions that override it; the first zone containing a point wins.
+
+    >>> zones = Zones(Uniform((0.0, -9.81)), (Zone((0.0, 0.0, 1.0, 1.0), Uniform((0.0, 9.81))),))
+    >>> zones.at(np.array([[0.5, 0.5], [2.0, 0.5]]), 0.0).tolist()
+    [[0.0, 9.81], [0.0, -9.81]]
+    """
+
+    base: GravityField = field(default_factory=Uniform)
+    zones: tuple[Zone, ...] = ()
+
+    @property
+    def uniform(self) -> bool:
+        return False
+
+    def at(self, points: Points, t: float) -> Points:
+        out = self.base.at(points, t)
+        taken = np.zeros(len(points), dtype=bool)
+        for zone in self.zones:
+            inside = zone.contains(points) & ~taken
+            if inside.any():
+                out[inside] = zone.field.at(points[inside], t)
+                taken |= inside
+        return out
+
+
+@dataclass(frozen=True, slots=True)
+class GravityRule:
+    """How one body departs from the field: a scale, and optionally its own direction.
+
+    The body's gravity is ``scale · field`` or, with a ``direction``,
+    ``scale · |field| · direction`` (a unit vector). ``GravityRule(scale=0)`` nullifies gravity.
+
+    >>> GravityRule(direction=(0.0, 2.0)).direction
+    (0.0, 1.0)
+    """
+
+    scale: float = 1.0
+    direction: Vec | None = None
+
+    def __post_init__(self) -> None:
+        finite("scale", self.scale)
+        if self.direction is not None:
+            finite_vec("direction", self.direction)
+            n = math.hypot(*self.direction)
+            if n == 0.0:
+                raise ValueError("direction: expected a non-zero vector, got (0, 0)")
+            object.__setattr__(self, "direction", (self.direction[0] / n, self.direction[1] / n))
+
+    @property
+    def is_default(self) -> bool:
+        return self.scale == 1.0 and self.direction is None
+
+
+def apply_rules(field_g: Points, scale: NDArray[np.float64], direction: Points) -> Points:
+    """Per-body gravity from the field at each body and its rule, vectorised.
+
+    ``direction`` rows are NaN where a body keeps the field's direction.
+    """
+    g = field_g * scale[:, None]
+    own = ~np.isnan(direction[:, 0])
+    if own.any():
+        mag = np.hypot(field_g[own, 0], field_g[own, 1]) * scale[own]
+        g[own] = direction[own] * mag[:, None]
+    return g
+
+
+def as_field(value: GravityField | Sequence[float]) -> GravityField:
+    """Accept a field or a plain (gx, gy) vector in m/s²."""
+    if isinstance(value, GravityField):
+        return value
+    gx, gy = value
+    return Uniform((float(gx), float(gy)))

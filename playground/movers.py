@@ -1,0 +1,286 @@
+"""Kinematic movers: platforms, elevators and rooms that follow prescribed paths.
+
+A path gives a pose (position in m, angle in rad) as a function of time. A :class:`Mover` drives a
+kinematic body along it the way the engine wants (Box2D's ``b2Body_SetTargetTransform``): each step
+it sets the velocity that reaches the target pose at the end of the step. It never teleports, so
+bodies standing on a platform are carried by friction, not left behind.
+
+>>> path = Sine(center=(0.0, 1.0), amplitude=(2.0, 0.0), frequency=0.5)
+>>> path.pose(0.5)
+((2.0, 1.0), 0.0)
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+from typing import Literal, Protocol, runtime_checkable
+
+import pymunk
+
+from playground._validate import finite, finite_vec, positive
+
+__all__ = ["Circle", "Elevator", "Mover", "Path", "Sine", "Spin", "Waypoints", "ring_room"]
+
+Vec = tuple[float, float]
+Pose = tuple[Vec, float]
+
+
+@runtime_checkable
+class Path(Protocol):
+    """A pose as a function of time: ``pose(t) -> ((x, y) m, angle rad)``."""
+
+    def pose(self, t: float) -> Pose: ...
+
+
+@dataclass(frozen=True, slots=True)
+class Waypoints:
+    """Through a list of points at a constant speed, linear or eased, looping or ping-pong.
+
+    Attributes:
+        points: the corners, m (at least two).
+        speed: travel speed along straight legs, m/s (eased legs average the same speed).
+        ease: smoothstep each leg, so the mover stops at every corner.
+        mode: ``"loop"`` returns from the last point to the first; ``"pingpong"`` reverses;
+            ``"once"`` stops at the last point.
+        angle: constant angle of the body, rad.
+
+    >>> Waypoints(((0.0, 0.0), (2.0, 0.0)), speed=1.0, mode="pingpong").pose(3.0)
+    ((1.0, 0.0), 0.0)
+    """
+
+    points: tuple[Vec, ...]
+    speed: float = 1.0
+    ease: bool = False
+    mode: Literal["loop", "pingpong", "once"] = "pingpong"
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        if len(self.points) < 2:
+            raise ValueError(f"points: expected at least 2 waypoints, got {len(self.points)}")
+        for i, p in enumerate(self.points):
+            finite_vec(f"points[{i}]", p)
+        positive("speed", self.speed)
+        if self.mode not in ("loop", "pingpong", "once"):
+            raise ValueError(f"mode: expected one of 'loop', 'pingpong', 'once', got {self.mode!r}")
+
+    def _legs(self) -> list[tuple[Vec, Vec]]:
+        pts = list(self.points)
+        if self.mode == "loop":
+            pts.append(pts[0])
+        elif self.mode == "pingpong":
+            pts += pts[-2::-1]
+        return list(itertools.pairwise(pts))
+
+    def pose(self, t: float) -> Pose:
+        legs = self._legs()
+        times = [math.dist(a, b) / self.speed for a, b in legs]
+        total = sum(times)
+        if self.mode == "once":
+            t = min(max(t, 0.0), total)
+        elif total > 0.0:
+            t = t % total
+        for (a, b), dur in zip(legs, times, strict=True):
+            if t <= dur and dur > 0.0:
+                s = t / dur
+                if self.ease:
+                    s = s * s * (3.0 - 2.0 * s)
+                return ((a[0] + (b[0] - a[0]) * s, a[1] + (b[1] - a[1]) * s), self.angle)
+            t -= dur
+        return (legs[-1][1], self.angle)
+
+
+@dataclass(frozen=True, slots=True)
+class Sine:
+    """Oscillation ``center + amplitude·sin(2πf·t + phase)``.
+
+    Attributes:
+        center: m.  amplitude: m (a vector: the direction of travel).  frequency: Hz.
+        phase: rad.  angle: constant angle, rad.
+    """
+
+    center: Vec = (0.0, 0.0)
+    amplitude: Vec = (1.0, 0.0)
+    frequency: float = 0.25
+    phase: float = 0.0
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        finite_vec("center", self.center)
+        finite_vec("amplitude", self.amplitude)
+        positive("frequency", self.frequency)
+        finite("phase", self.phase)
+
+    def pose(self, t: float) -> Pose:
+        s = math.sin(2.0 * math.pi * self.frequency * t + self.phase)
+        return (
+            (self.center[0] + self.amplitude[0] * s, self.center[1] + self.amplitude[1] * s),
+            self.angle,
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class Circle:
+    """Around a circle of ``radius`` (m) about ``center`` (m), one turn per ``period`` (s).
+
+    The body keeps its angle (a Ferris-wheel gondola) unless ``turn_with_path`` is set.
+    """
+
+    center: Vec = (0.0, 0.0)
+    radius: float = 1.0
+    period: float = 4.0
+    phase: float = 0.0
+    turn_with_path: bool = False
+
+    def __post_init__(self) -> None:
+        finite_vec("center", self.center)
+        positive("radius", self.radius)
+        finite("period", self.period)
+        if self.period == 0.0:
+            raise ValueError("period: expected a non-zero number of seconds, got 0")
+
+    def pose(self, t: float) -> Pose:
+        a = self.phase + 2.0 * math.pi * t / self.period
+        pos = (
+            self.center[0] + self.radius * math.cos(a),
+            self.center[1] + self.radius * math.sin(a),
+        )
+        return (pos, a - self.phase if self.turn_with_path else 0.0)
+
+
+@dataclass(frozen=True, slots=True)
+class Spin:
+    """Constant rotation about a fixed ``position`` (m) at ``rate`` (rad/s, CCW positive)."""
+
+    position: Vec = (0.0, 0.0)
+    rate: float = 1.0
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        finite_vec("position", self.position)
+        finite("rate", self.rate)
+
+    def pose(self, t: float) -> Pose:
+        return (self.position, self.angle + self.rate * t)
+
+
+@dataclass(frozen=True, slots=True)
+class Elevator:
+    """Rises along ``axis`` with a prescribed ``acceleration`` (m/s²) from rest.
+
+    Waits at ``start`` until ``start_time`` (s), accelerates for ``duration`` (s), then cruises at
+    the speed reached. ``p(t) = start + axis·½·a·τ²`` while accelerating.
+
+    >>> Elevator(start=(0.0, 0.0), acceleration=2.0, start_time=1.0).pose(3.0)
+    ((0.0, 4.0), 0.0)
+    """
+
+    start: Vec = (0.0, 0.0)
+    axis: Vec = (0.0, 1.0)
+    acceleration: float = 1.0
+    start_time: float = 0.0
+    duration: float = math.inf
+
+    def __post_init__(self) -> None:
+        finite_vec("start", self.start)
+        finite_vec("axis", self.axis)
+        if math.hypot(*self.axis) == 0.0:
+            raise ValueError("axis: expected a non-zero vector")
+        finite("acceleration", self.acceleration)
+        finite("start_time", self.start_time)
+        if not self.duration > 0.0:
+            raise ValueError(f"duration: expected a number of seconds > 0, got {self.duration!r}")
+
+    def distance(self, t: float) -> float:
+        """Distance travelled along the axis at time ``t``, m."""
+        tau = max(0.0, t - self.start_time)
+        if tau <= self.duration:
+            return 0.5 * self.acceleration * tau * tau
+        d = self.duration
+        return 0.5 * self.acceleration * d * d + self.acceleration * d * (tau - d)
+
+    def pose(self, t: float) -> Pose:
+        n = math.hypot(*self.axis)
+        s = self.distance(t) / n
+        return ((self.start[0] + self.axis[0] * s, self.start[1] + self.axis[1] * s), 0.0)
+
+
+class Mover:
+    """Drives one kinematic body along a path by velocity, never by teleporting.
+
+    Each step, velocity = (target(t + dt) − position) / dt and angular velocity likewise, so the
+    body reaches the path's pose exactly at the end of the step (kinematic bodies move by
+    ``p += v·dt`` in pymunk, with or without substeps).
+
+    >>> body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    >>> mover = Mover(body, Spin(rate=2.0))
+    >>> mover.drive(t=0.0, dt=0.5)
+    >>> body.angular_velocity
+    2.0
+    """
+
+    __slots__ = ("body", "path")
+
+    def __init__(self, body: pymunk.Body, path: Path) -> None:
+        if body.body_type != pymunk.Body.KINEMATIC:
+            raise ValueError("body: a mover drives a KINEMATIC body (got a dynamic or static one)")
+        self.body = body
+        self.path = path
+
+    def place(self, t: float) -> None:
+        """Put the body at its pose at time ``t``: only before the first step (setup)."""
+        (x, y), a = self.path.pose(t)
+        self.body.position = (x, y)
+        self.body.angle = a
+
+    def drive(self, t: float, dt: float) -> None:
+        """Set the velocity that brings the body from its pose now to the path's pose at t + dt."""
+        (x, y), a = self.path.pose(t + dt)
+        p = self.body.position
+        self.body.velocity = ((x - p.x) / dt, (y - p.y) / dt)
+        self.body.angular_velocity = (a - self.body.angle) / dt
+
+
+def ring_room(
+    space: pymunk.Space,
+    body: pymunk.Body,
+    radius: float,
+    *,
+    segments: int = 48,
+    thickness: float = 0.1,
+    friction: float = 1.0,
+) -> list[pymunk.Segment]:
+    """Build a closed ring of ``segments`` thin segments (inner radius ``radius``, m) on ``body``.
+
+    Spin the (kinematic) body with a :class:`Spin` mover to make a carnival ride: a body on the
+    inner wall is carried round and feels ``v²/r`` outward.
+
+    >>> space = pymunk.Space()
+    >>> ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    >>> len(ring_room(space, ring, 5.0, segments=12))
+    12
+    """
+    positive("radius", radius)
+    positive("thickness", thickness)
+    if segments < 3:
+        raise ValueError(f"segments: expected at least 3, got {segments}")
+    # Chord midpoints are the closest points to the centre: put their inner faces at ``radius``.
+    r = (radius + thickness) / math.cos(math.pi / segments)
+    # Slightly longer chords so neighbouring segments overlap: no gaps to slip through.
+    shapes = []
+    for i in range(segments):
+        a0 = 2.0 * math.pi * (i - 0.02) / segments
+        a1 = 2.0 * math.pi * (i + 1.02) / segments
+        seg = pymunk.Segment(
+            body,
+            (r * math.cos(a0), r * math.sin(a0)),
+            (r * math.cos(a1), r * math.sin(a1)),
+            thickness,
+        )
+        seg.friction = friction
+        shapes.append(seg)
+    if body.space is None:
+        space.add(body)
+    space.add(*shapes)
+    return shapes

@@ -1,0 +1,103 @@
+"""Perceived gravity: what a body's inner ear says "down" is.
+
+The specific force f = support / m is what an accelerometer reads; the perceived gravity is −f,
+smoothed by a 1€ filter (optionally after a median-of-3 spike stage) so it is steady at rest and
+quick when the world turns. At rest it equals the real gravity; in free fall it is zero; inside a
+spinning ring it points outward. The unit "up" is held while |perceived gravity| is below a
+threshold, so a 180° flip (which passes through zero) never yields a NaN or zero-length up.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from playground._validate import positive
+from playground.filters import FilterChain, Median3, OneEuroFilter
+
+__all__ = ["PerceivedGravity", "Perception"]
+
+
+@dataclass(frozen=True, slots=True)
+class Perception:
+    """How perceived gravity is filtered.
+
+    Attributes:
+        min_cutoff: 1€ minimum cutoff, Hz. Lower: steadier at rest, more lag.
+        beta: 1€ speed coefficient, s/m·s⁻²… (cutoff rises by β per m/s³ of change).
+        d_cutoff: cutoff of the derivative's smoothing, Hz.
+        spike_filter: put a median-of-3 stage first (removes one-step impulse spikes, one step of
+            delay for a spike only).
+        up_threshold: below this |perceived gravity| (m/s²) "up" holds its last direction.
+    """
+
+    min_cutoff: float = 2.0
+    beta: float = 0.05
+    d_cutoff: float = 1.0
+    spike_filter: bool = True
+    up_threshold: float = 1.0
+
+    def __post_init__(self) -> None:
+        positive("min_cutoff", self.min_cutoff)
+        positive("d_cutoff", self.d_cutoff)
+        positive("up_threshold", self.up_threshold)
+        if not (math.isfinite(self.beta) and self.beta >= 0.0):
+            raise ValueError(f"beta: expected a finite number >= 0, got {self.beta!r}")
+
+
+class PerceivedGravity:
+    """Filtered −specific force and a held unit "up", one row per tracked body.
+
+    >>> pg = PerceivedGravity(Perception(spike_filter=False))
+    >>> pg.resize(np.array([-1]))
+    >>> pg.update(np.array([[0.0, 9.81]]), np.array([True]), dt=0.01)
+    >>> pg.gravity.tolist(), pg.up.tolist()
+    ([[-0.0, -9.81]], [[0.0, 1.0]])
+    """
+
+    def __init__(self, config: Perception) -> None:
+        self.config = config
+        one_euro = OneEuroFilter(config.min_cutoff, config.beta, config.d_cutoff)
+        self._filter: OneEuroFilter | FilterChain = (
+            FilterChain(Median3(), one_euro) if config.spike_filter else one_euro
+        )
+        self.gravity: NDArray[np.float64] = np.zeros((0, 2))
+        self.up: NDArray[np.float64] = np.zeros((0, 2))
+        self._rows = 0
+
+    def resize(self, rows: NDArray[np.intp]) -> None:
+        """Re-index after tracked bodies changed: new row i is old row rows[i] (−1: new)."""
+        self._filter.select(rows)
+        keep = rows >= 0
+        gravity = np.zeros((len(rows), 2))
+        up = np.full((len(rows), 2), np.nan)
+        if self._rows:
+            gravity[keep] = self.gravity[rows[keep]]
+            up[keep] = self.up[rows[keep]]
+        self.gravity, self.up, self._rows = gravity, up, len(rows)
+
+    def update(
+        self,
+        specific: NDArray[np.float64],
+        valid: NDArray[np.bool_],
+        dt: float,
+    ) -> None:
+        """Feed this step's specific force (m/s², rows); invalid rows hold.
+
+        Rows that have not yet felt a strong enough reading keep a NaN up; the caller supplies
+        one (the world uses the gravity field at the body).
+        """
+        if len(specific) != self._rows:
+            raise ValueError(
+                f"specific: expected {self._rows} rows (call resize first), got {len(specific)}"
+            )
+        sample = np.where(valid[:, None], -specific, np.nan)
+        out = np.asarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
+        known = np.isfinite(out).all(axis=1)
+        self.gravity[known] = out[known]
+        norm = np.hypot(self.gravity[:, 0], self.gravity[:, 1])
+        strong = known & (norm >= self.config.up_threshold)
+        self.up[strong] = -self.gravity[strong] / norm[strong, None]

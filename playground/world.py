@@ -1,0 +1,585 @@
+"""The world: a pymunk space in SI units and the fixed step that runs every stage top-down.
+
+The stages (DESIGN.md §4) are named by :class:`Stage`; a stage the scene does not need is skipped
+without cost (uniform gravity is ``space.gravity``; no tracked body, no solver; no perceiver, no
+filter). Each stage can be timed.
+
+>>> world = World()
+>>> box = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.5))
+>>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+>>> world.track("crate")
+>>> world.run(1.0)
+>>> round(world.forces("crate").support[1], 6)
+98.1
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from enum import Enum
+
+import numpy as np
+import pymunk
+import pymunk.batch as batch
+from numpy.typing import NDArray
+
+from playground._batch import BodyRows, lookup, read_positions
+from playground._validate import finite, finite_vec, positive
+from playground.forces import BodyForces, Category, ForceLedger, ForceSolver
+from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
+from playground.movers import Mover, Path
+from playground.perception import PerceivedGravity, Perception
+
+__all__ = ["Stage", "StageTiming", "World", "WorldConfig"]
+
+Vec = tuple[float, float]
+Hook = Callable[["World"], None]
+
+
+class Stage(Enum):
+    """The stages of one step, in the order they run."""
+
+    INPUTS = 1
+    EVENTS = 2
+    GRAVITY = 3
+    MOVERS = 4
+    CONTROL = 5
+    PHYSICS = 6
+    FORCES = 7
+    FILTER = 8
+    OBSERVE = 9
+
+
+@dataclass(frozen=True, slots=True)
+class WorldConfig:
+    """Simulation settings, frozen.
+
+    Attributes:
+        dt: the fixed step, s.
+        substeps: ``space.step`` calls per step (each of dt/substeps); forces are re-applied
+            before each because pymunk clears them.
+        iterations: the contact/joint solver's iterations per substep.
+        damping: fraction of velocity kept after one second (pymunk's convention; 1 = none).
+        collision_slop: allowed overlap, m. pymunk's default 0.1 is meant for pixels: in metres
+            it lets a body sink 10 cm into the floor. 5 mm is invisible at human scale and still
+            large enough to keep resting contacts persistent (no jitter).
+        sleep_time: idle time before bodies fall asleep, s (inf: never). With sleeping on, the
+            solver checks each tracked body for sleep (per-body Python) and forces are written
+            per body rather than in one batch.
+        contact_split: also split engine forces into contacts and constraints (costs a batch
+            read of every arbiter per substep).
+        timing: time each stage (off by default: ``perf_counter`` calls cost ~1 µs a stage).
+        perception: how perceived gravity is filtered.
+    """
+
+    dt: float = 1.0 / 120.0
+    substeps: int = 1
+    iterations: int = 10
+    damping: float = 1.0
+    collision_slop: float = 0.005
+    sleep_time: float = math.inf
+    contact_split: bool = False
+    timing: bool = False
+    perception: Perception = field(default_factory=Perception)
+
+    def __post_init__(self) -> None:
+        positive("dt", self.dt)
+        for name in ("substeps", "iterations"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+                raise ValueError(f"{name}: expected an integer >= 1, got {value!r}")
+        finite("damping", self.damping)
+        if not 0.0 < self.damping <= 1.0:
+            raise ValueError(f"damping: expected a number in (0, 1], got {self.damping!r}")
+        finite("collision_slop", self.collision_slop)
+        if self.collision_slop < 0.0:
+            raise ValueError(
+                f"collision_slop: expected a number >= 0 m, got {self.collision_slop!r}"
+            )
+        if not self.sleep_time > 0.0:
+            raise ValueError(
+                f"sleep_time: expected a number of seconds > 0, got {self.sleep_time!r}"
+            )
+
+
+@dataclass(slots=True)
+class StageTiming:
+    """Wall-clock cost of one stage: total seconds, calls, and the last call's seconds."""
+
+    total: float = 0.0
+    calls: int = 0
+    last: float = 0.0
+
+    @property
+    def mean(self) -> float:
+        """Mean seconds per call."""
+        return self.total / self.calls if self.calls else 0.0
+
+
+class World:
+    """A pymunk space in SI units, stepped at a fixed dt through the stages of :class:`Stage`.
+
+    Bodies are added by name (:meth:`add`); the world registers masses for per-body gravity and
+    tracks forces only for bodies passed to :meth:`track`. Scripts and controllers hook into the
+    INPUTS, EVENTS, CONTROL and OBSERVE stages with :meth:`on`; all forces go through
+    :meth:`apply_force` so the solver's ledger knows them.
+    """
+
+    def __init__(
+        self,
+        config: WorldConfig | None = None,
+        gravity: GravityField | Sequence[float] | None = None,
+    ) -> None:
+        self.config = config if config is not None else WorldConfig()
+        self.space = pymunk.Space()
+        self.space.iterations = self.config.iterations
+        self.space.damping = self.config.damping
+        self.space.collision_slop = self.config.collision_slop
+        self.space.sleep_time_threshold = self.config.sleep_time
+        self.time = 0.0
+        self.steps = 0
+        self.ledger = ForceLedger()
+        self.solver = ForceSolver(
+            contact_split=self.config.contact_split,
+            check_sleep=math.isfinite(self.config.sleep_time),
+        )
+        self.perceived = PerceivedGravity(self.config.perception)
+        self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
+        self._bodies: dict[str, pymunk.Body] = {}
+        self._names: dict[int, str] = {}
+        self._rules: dict[int, GravityRule] = {}
+        self._movers: list[Mover] = []
+        self._hooks: dict[Stage, list[Hook]] = {s: [] for s in Stage}
+        self._events: list[tuple[float, int, Hook]] = []
+        self._perceivers: set[int] = set()
+        self._rows = BodyRows()
+        self._pos_buffer = batch.Buffer()
+        self._registry_dirty = True
+        self._reg_ids = np.zeros(0, dtype=np.uintp)
+        self._reg_mass = np.zeros(0)
+        self._reg_scale = np.zeros(0)
+        self._reg_dir = np.zeros((0, 2))
+        self._field_force: NDArray[np.float64] | None = None
+        self._field_ids = np.zeros(0, dtype=np.uintp)
+        self._field: GravityField = Uniform()
+        self.gravity = gravity if gravity is not None else Uniform()
+
+    # -- gravity ---------------------------------------------------------------------------------
+
+    @property
+    def gravity(self) -> GravityField:
+        """The gravity field (m/s²). A plain (gx, gy) is accepted and becomes :class:`Uniform`."""
+        return self._field
+
+    @gravity.setter
+    def gravity(self, value: GravityField | Sequence[float]) -> None:
+        if not isinstance(value, GravityField):
+            finite_vec("gravity", tuple(value))
+            value = Uniform((float(value[0]), float(value[1])))
+        self._field = value
+        self.space.gravity = self._space_gravity(self.time)
+
+    def _space_gravity(self, t: float) -> Vec:
+        """What ``space.gravity`` holds: the field if uniform, else zero (forces do the work)."""
+        f = self._field
+        if isinstance(f, Uniform):
+            return f.g
+        if isinstance(f, RotatingRoom):
+            return f.vector(t)
+        if f.uniform:
+            g = f.at(np.zeros((1, 2)), t)[0]
+            return (float(g[0]), float(g[1]))
+        return (0.0, 0.0)
+
+    def set_gravity_rule(self, name: str, rule: GravityRule | None) -> None:
+        """Give one body its own gravity: a scale (0 nullifies it) or its own direction.
+
+        ``None`` restores the field.
+        """
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only dynamic bodies feel gravity")
+        if rule is None or rule.is_default:
+            self._rules.pop(body.id, None)
+        else:
+            self._rules[body.id] = rule
+        self._registry_dirty = True
+
+    def gravity_rule(self, name: str) -> GravityRule:
+        """The body's rule (the default rule if it has none)."""
+        return self._rules.get(self.body(name).id, GravityRule())
+
+    def gravity_at(self, name: str) -> Vec:
+        """The gravity this body feels now (field and rule), m/s²."""
+        body = self.body(name)
+        g = self._field.at(np.array([[body.position.x, body.position.y]]), self.time)
+        rule = self._rules.get(body.id, GravityRule())
+        d = np.array([rule.direction if rule.direction is not None else (np.nan, np.nan)])
+        out = apply_rules(g, np.array([rule.scale]), d)[0]
+        return (float(out[0]), float(out[1]))
+
+    # -- bodies ----------------------------------------------------------------------------------
+
+    def add(self, name: str, body: pymunk.Body, *shapes: pymunk.Shape) -> pymunk.Body:
+        """Add a named body and its shapes. Names are unique."""
+        if name in self._bodies:
+            raise ValueError(f"{name}: a body with this name already exists")
+        if body.body_type == pymunk.Body.DYNAMIC and not (
+            body.mass > 0 and math.isfinite(body.mass)
+        ):
+            raise ValueError(f"{name}: mass must be a finite number > 0 kg, got {body.mass!r}")
+        self.space.add(body, *shapes)
+        self._bodies[name] = body
+        self._names[body.id] = name
+        self._registry_dirty = True
+        return body
+
+    def remove(self, name: str) -> None:
+        """Remove a body, its shapes and constraints, and stop tracking it."""
+        body = self._bodies.pop(name)
+        del self._names[body.id]
+        self._rules.pop(body.id, None)
+        if self.solver.row_of(body) is not None:
+            self._untrack(body)
+        self._movers = [m for m in self._movers if m.body is not body]
+        self.space.remove(*body.shapes, *body.constraints, body)
+        self._registry_dirty = True
+
+    def body(self, name: str) -> pymunk.Body:
+        """The body called ``name`` (KeyError naming the known bodies otherwise)."""
+        try:
+            return self._bodies[name]
+        except KeyError:
+            known = ", ".join(sorted(self._bodies)) or "none"
+            raise KeyError(f"no body named {name!r} (known: {known})") from None
+
+    def name_of(self, body: pymunk.Body) -> str | None:
+        return self._names.get(body.id)
+
+    @property
+    def names(self) -> list[str]:
+        return list(self._bodies)
+
+    def set_mass(self, name: str, mass: float, moment: float | None = None) -> None:
+        """Change a body's mass (kg) and optionally moment (kg·m²); the solver follows."""
+        positive("mass", mass)
+        body = self.body(name)
+        body.mass = mass
+        if moment is not None:
+            positive("moment", moment)
+            body.moment = moment
+        self.solver.refresh_masses()
+        self._registry_dirty = True
+
+    def add_box(
+        self,
+        name: str,
+        *,
+        mass: float,
+        size: Vec,
+        position: Vec,
+        angle: float = 0.0,
+        friction: float = 0.8,
+        elasticity: float = 0.0,
+    ) -> pymunk.Body:
+        """A dynamic box of ``size`` (w, h in m) and ``mass`` (kg)."""
+        positive("mass", mass)
+        body = pymunk.Body(mass, pymunk.moment_for_box(mass, size))
+        body.position = position
+        body.angle = angle
+        shape = pymunk.Poly.create_box(body, size)
+        shape.friction = friction
+        shape.elasticity = elasticity
+        return self.add(name, body, shape)
+
+    def add_static_segment(
+        self,
+        a: Vec,
+        b: Vec,
+        radius: float = 0.05,
+        *,
+        friction: float = 1.0,
+        elasticity: float = 0.0,
+    ) -> pymunk.Segment:
+        """A static segment from ``a`` to ``b`` (m) on the space's static body."""
+        seg = pymunk.Segment(self.space.static_body, a, b, radius)
+        seg.friction = friction
+        seg.elasticity = elasticity
+        self.space.add(seg)
+        return seg
+
+    def add_mover(self, name: str, path: Path) -> Mover:
+        """Drive the kinematic body ``name`` along ``path`` (placed at its pose now)."""
+        mover = Mover(self.body(name), path)
+        mover.place(self.time)
+        self._movers.append(mover)
+        return mover
+
+    # -- forces ----------------------------------------------------------------------------------
+
+    def track(self, *names: str, perceive: bool = True) -> None:
+        """Recover engine forces for these dynamic bodies every step; ``perceive`` also filters
+        their perceived gravity."""
+        for name in names:
+            body = self.body(name)
+            old = len(self.solver.bodies)
+            self.solver.track(body)
+            if len(self.solver.bodies) > old:
+                self.perceived.resize(np.concatenate([np.arange(old), [-1]]).astype(np.intp))
+            if perceive:
+                self._perceivers.add(body.id)
+
+    def _untrack(self, body: pymunk.Body) -> None:
+        row = self.solver.row_of(body)
+        assert row is not None
+        n = len(self.solver.bodies)
+        self.solver.untrack(body)
+        self.perceived.resize(np.delete(np.arange(n), row).astype(np.intp))
+        self._perceivers.discard(body.id)
+
+    def apply_force(
+        self,
+        body: pymunk.Body | str,
+        force: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Apply ``force`` (N, world frame) at world ``point`` (m) during the coming step."""
+        b = self.body(body) if isinstance(body, str) else body
+        if b.body_type == pymunk.Body.DYNAMIC:
+            self.ledger.add(b, force, point=point, category=category)
+
+    def apply_impulse(
+        self,
+        body: pymunk.Body | str,
+        impulse: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Apply ``impulse`` (N·s) spread over the coming step, as the force impulse/dt."""
+        dt = self.config.dt
+        self.apply_force(body, (impulse[0] / dt, impulse[1] / dt), point=point, category=category)
+
+    def forces(self, name: str) -> BodyForces:
+        """The last readings of a tracked body."""
+        row = self.solver.row_of(self.body(name))
+        if row is None:
+            raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
+        return self.solver.reading(row)
+
+    def perceived_gravity(self, name: str) -> Vec:
+        """The filtered perceived gravity of a tracked body, m/s²."""
+        row = self.solver.row_of(self.body(name))
+        if row is None:
+            raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
+        g = self.perceived.gravity[row]
+        return (float(g[0]), float(g[1]))
+
+    def perceived_up(self, name: str) -> Vec:
+        """Unit vector opposite the perceived gravity, held through weak readings."""
+        row = self.solver.row_of(self.body(name))
+        if row is None:
+            raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
+        u = self.perceived.up[row]
+        return (float(u[0]), float(u[1]))
+
+    # -- hooks and events ------------------------------------------------------------------------
+
+    def on(self, stage: Stage, hook: Hook) -> None:
+        """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE)."""
+        if stage not in (Stage.INPUTS, Stage.EVENTS, Stage.CONTROL, Stage.OBSERVE):
+            raise ValueError(f"stage: hooks run in INPUTS, EVENTS, CONTROL or OBSERVE, not {stage}")
+        self._hooks[stage].append(hook)
+
+    def at(self, t: float, event: Hook) -> None:
+        """Run ``event(world)`` once, in the EVENTS stage of the first step starting at or after
+        ``t`` (s). Events at the same time run in the order they were scheduled."""
+        finite("t", t)
+        self._events.append((t, len(self._events), event))
+        self._events.sort(key=lambda e: (e[0], e[1]))
+
+    # -- the step --------------------------------------------------------------------------------
+
+    def step(self) -> None:
+        """Advance one fixed step of ``config.dt`` seconds through the stages, top-down."""
+        run = self._run_timed if self.config.timing else self._run
+        # 1. inputs: scripts and keyboards turn into intents
+        if self._hooks[Stage.INPUTS]:
+            run(Stage.INPUTS, self._run_hooks, Stage.INPUTS)
+        # 2. events: scheduled scene changes
+        if (self._events and self._events[0][0] <= self.time + 1e-12) or self._hooks[Stage.EVENTS]:
+            run(Stage.EVENTS, self._run_events)
+        # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
+        if self._needs_gravity_stage():
+            run(Stage.GRAVITY, self._apply_gravity)
+        # 4. movers: kinematic bodies get the velocity that reaches their next pose
+        if self._movers:
+            run(Stage.MOVERS, self._drive_movers)
+        # 5. control: controllers sense and put their forces in the ledger
+        if self._hooks[Stage.CONTROL]:
+            run(Stage.CONTROL, self._run_hooks, Stage.CONTROL)
+        # 6. physics: flush forces, step the space (re-applying forces every substep)
+        run(Stage.PHYSICS, self._physics)
+        # 7. forces: reverse integration for tracked bodies
+        if self.solver.bodies:
+            run(Stage.FORCES, self._solve_forces)
+        # 8. filter: perceived gravity for the bodies that perceive
+        if self._perceivers:
+            run(Stage.FILTER, self._filter)
+        self.ledger.clear()
+        self._field_force = None
+        self.time = (self.steps + 1) * self.config.dt
+        self.steps += 1
+        # 9. observe: recorders, checks, views — read-only
+        if self._hooks[Stage.OBSERVE]:
+            run(Stage.OBSERVE, self._run_hooks, Stage.OBSERVE)
+
+    def run(self, seconds: float) -> None:
+        """Step for ``seconds`` of simulated time (rounded to whole steps)."""
+        for _ in range(round(seconds / self.config.dt)):
+            self.step()
+
+    @staticmethod
+    def _run(stage: Stage, fn: Callable[..., None], *args: object) -> None:
+        fn(*args)
+
+    def _run_timed(self, stage: Stage, fn: Callable[..., None], *args: object) -> None:
+        t0 = time.perf_counter()
+        fn(*args)
+        elapsed = time.perf_counter() - t0
+        timing = self.timings[stage]
+        timing.total += elapsed
+        timing.calls += 1
+        timing.last = elapsed
+
+    def _run_hooks(self, stage: Stage) -> None:
+        for hook in self._hooks[stage]:
+            hook(self)
+
+    def _run_events(self) -> None:
+        while self._events and self._events[0][0] <= self.time + 1e-12:
+            _, _, event = self._events.pop(0)
+            event(self)
+        for hook in self._hooks[Stage.EVENTS]:
+            hook(self)
+
+    # -- stage bodies ----------------------------------------------------------------------------
+
+    def _needs_gravity_stage(self) -> bool:
+        return bool(self._rules) or not isinstance(self._field, Uniform)
+
+    def _refresh_registry(self) -> None:
+        """Sorted ids, masses and rules of every named dynamic body, for vectorised gravity."""
+        dyn = [b for b in self._bodies.values() if b.body_type == pymunk.Body.DYNAMIC]
+        dyn.sort(key=lambda b: b.id)
+        self._reg_ids = np.array([b.id for b in dyn], dtype=np.uintp)
+        self._reg_mass = np.array([b.mass for b in dyn], dtype=np.float64)
+        rules = [self._rules.get(b.id, GravityRule()) for b in dyn]
+        self._reg_scale = np.array([r.scale for r in rules], dtype=np.float64)
+        self._reg_dir = np.array(
+            [r.direction if r.direction is not None else (np.nan, np.nan) for r in rules],
+            dtype=np.float64,
+        ).reshape(-1, 2)
+        self._registry_dirty = False
+
+    def _apply_gravity(self) -> None:
+        if self._registry_dirty:
+            self._refresh_registry()
+        g_space = self._space_gravity(self.time)
+        self.space.gravity = g_space
+        if self._field.uniform:
+            # Only bodies with their own rule need a correction force: m·(g_rule − g_space).
+            for body_id, rule in self._rules.items():
+                body = self._bodies[self._names[body_id]]
+                g = apply_rules(
+                    np.array([g_space]),
+                    np.array([rule.scale]),
+                    np.array([rule.direction or (np.nan, np.nan)]),
+                )[0]
+                m = body.mass
+                self.ledger.add(
+                    body,
+                    (m * (g[0] - g_space[0]), m * (g[1] - g_space[1])),
+                    category=Category.PASSIVE,
+                )
+            return
+        # A field that varies in space: one vectorised evaluation at every dynamic body.
+        ids, pos = read_positions(self.space, self._pos_buffer)
+        reg = lookup(self._reg_ids, ids)
+        rows = np.nonzero(reg >= 0)[0]
+        idx = reg[rows]
+        g = apply_rules(
+            self._field.at(pos[rows], self.time), self._reg_scale[idx], self._reg_dir[idx]
+        )
+        self._field_ids = ids[rows]
+        self._field_force = g * self._reg_mass[idx, None]
+
+    def _drive_movers(self) -> None:
+        for mover in self._movers:
+            mover.drive(self.time, self.config.dt)
+
+    def _physics(self) -> None:
+        cfg = self.config
+        n = cfg.substeps
+        h = cfg.dt / n
+        self.ledger.flush()
+        field_force = self._field_force
+        batched = field_force is not None or bool(self.solver.bodies)
+        if batched:
+            self._rows.read(self.space)
+            if field_force is not None:
+                at = lookup(np.sort(self._field_ids), self._rows.ids)
+                order = np.argsort(self._field_ids)
+                hit = np.nonzero(at >= 0)[0]
+                field_rows = np.zeros((len(self._rows.ids), 2))
+                field_rows[hit] = field_force[order[at[hit]]]
+                self._rows.state[:, 3:5] += field_rows
+                self._write_forces()
+            else:
+                field_rows = None
+            if self.solver.bodies:
+                self.solver.before_step(self._rows.ids, self._rows.state, field_rows)
+        for k in range(n):
+            if k > 0:
+                if batched:
+                    self._write_forces()
+                else:
+                    self.ledger.flush()
+            self.space.step(h)
+            if self.solver.bodies:
+                ids, vel = self._rows.read_velocities(self.space)
+                self.solver.after_substep(self.space, ids, vel, last=k == n - 1)
+
+    def _write_forces(self) -> None:
+        """Write the forces of the last batch read back, in one batch or per body if sleeping."""
+        if math.isfinite(self.config.sleep_time):
+            by_id = {b.id: b for b in self.space.bodies}
+            for body_id, row in zip(self._rows.ids, self._rows.state, strict=True):
+                body = by_id.get(int(body_id))
+                if body is not None and body.body_type == pymunk.Body.DYNAMIC:
+                    body.force = (row[3], row[4])
+                    body.torque = row[5]
+        else:
+            self._rows.write_forces(self.space, self._rows.state[:, 3:6])
+
+    def _solve_forces(self) -> None:
+        self.solver.finish(
+            dt=self.config.dt,
+            substeps=self.config.substeps,
+            damping=self.config.damping,
+            space_gravity=(self.space.gravity.x, self.space.gravity.y),
+            ledger=self.ledger,
+        )
+
+    def _filter(self) -> None:
+        self.perceived.update(self.solver.specific, self.solver.valid, self.config.dt)
+        # Until a body has felt anything, its up is against the gravity field at it.
+        for row in np.nonzero(~np.isfinite(self.perceived.up).all(axis=1))[0]:
+            g = self.gravity_at(self._names[self.solver.bodies[row].id])
+            n = math.hypot(*g)
+            self.perceived.up[row] = (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
