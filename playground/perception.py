@@ -70,7 +70,9 @@ class PerceivedGravity:
 
     def resize(self, rows: NDArray[np.intp]) -> None:
         """Re-index after tracked bodies changed: new row i is old row rows[i] (−1: new)."""
-        self._filter.select(rows)
+        # Before the first sample the filter has no rows to keep: every row is new to it.
+        fresh = self._filter.value is None
+        self._filter.select(np.full(len(rows), -1, dtype=np.intp) if fresh else rows)
         keep = rows >= 0
         gravity = np.zeros((len(rows), 2))
         up = np.full((len(rows), 2), np.nan)
