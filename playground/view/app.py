@@ -1,0 +1,554 @@
+"""The desktop app: a window (or an off-screen surface), the keyboard, a fixed-step accumulator and
+the frame loop that steps physics at the level's dt and draws at the display's rate.
+
+Physics and rendering are independent: each frame adds its wall time (× the speed factor) to an
+accumulator and runs as many whole physics steps as fit; drawing only reads the world. The
+keyboard becomes the player's :class:`~playground.intents.Intent` in the world's INPUTS stage,
+through one path (:meth:`Session.input_hook`), which also records the replay — so a replay played
+back headless feeds exactly the intents the window fed.
+
+>>> acc = Accumulator(dt=0.01)
+>>> acc.advance(0.025), acc.advance(0.006), acc.advance(0.0, speed=2.0)
+(2, 1, 0)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import sys
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pygame
+
+from playground.intents import Intent
+from playground.view.camera import Camera
+from playground.view.draw import (
+    COLOURS,
+    Overlay,
+    body_arrows,
+    draw_arrows,
+    draw_grid,
+    draw_legend,
+    draw_world,
+)
+from playground.view.hud import Hud, HudInfo, Scope, StageCosts
+from playground.view.replay import Recorder, Replay
+from playground.world import Stage, World
+
+__all__ = [
+    "CONTROLS",
+    "Accumulator",
+    "App",
+    "Keyboard",
+    "Session",
+    "Show",
+    "display_available",
+]
+
+Vec = tuple[float, float]
+
+MAX_STEPS_PER_FRAME = 32  # physics steps run at most per frame; beyond that the view falls behind
+SPEEDS = (0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0)  # slow motion … fast forward, × real time
+HEADLESS_FRAME = 1.0 / 60.0  # s of wall time a headless frame stands for
+ZOOM_STEP = 1.25  # zoom factor per key press or wheel notch
+
+
+@dataclass(slots=True)
+class Show:
+    """A built level as the view sees it.
+
+    Attributes:
+        name: the level's name (stored in replays).
+        world: the world, ready to step.
+        title, description: for the HUD.
+        controllers: controllers by body name (the player and enemies).
+        player: the body name the keyboard drives (None: nobody).
+        follow: the body name the camera follows (None: fixed camera).
+        camera: the camera centre at start, m.
+        pixels_per_metre: the zoom at start, px/m.
+        roll: start with the camera rolling with the followed body's perceived up.
+    """
+
+    name: str
+    world: World
+    title: str
+    description: str = ""
+    controllers: Mapping[str, Any] = field(default_factory=dict)
+    player: str | None = None
+    follow: str | None = None
+    camera: Vec = (0.0, 0.0)
+    pixels_per_metre: float = 40.0
+    roll: bool = False
+
+
+class Accumulator:
+    """Turns wall time into whole physics steps of ``dt`` seconds (a fixed-step accumulator)."""
+
+    def __init__(self, dt: float, max_steps: int = MAX_STEPS_PER_FRAME) -> None:
+        if not (math.isfinite(dt) and dt > 0.0):
+            raise ValueError(f"dt: expected a number of seconds > 0, got {dt!r}")
+        self.dt = dt
+        self.max_steps = max_steps
+        self._acc = 0.0
+
+    def advance(self, elapsed: float, speed: float = 1.0) -> int:
+        """Add ``elapsed`` s of wall time at ``speed`` × and return the steps to run now."""
+        self._acc += max(elapsed, 0.0) * speed
+        # A small tolerance so 0.025 s at dt 0.01 gives 2 steps, not 1 because of rounding.
+        n = int((self._acc + 1e-9 * self.dt) // self.dt)
+        if n > self.max_steps:
+            n = self.max_steps
+            self._acc = 0.0
+        else:
+            self._acc -= n * self.dt
+        return n
+
+    def reset(self) -> None:
+        self._acc = 0.0
+
+
+# -- input ---------------------------------------------------------------------------------------
+
+CONTROLS: tuple[tuple[str, str], ...] = (
+    ("A / D, ← / →", "move"),
+    ("W / S, ↑ / ↓", "climb while hanging"),
+    ("Space", "jump"),
+    ("E", "grab / release"),
+    ("F (hold)", "push"),
+    ("G", "flip own gravity / restore it"),
+    ("X", "nullify the nearest enemy's gravity"),
+    ("R", "restart"),
+    ("P", "pause"),
+    (". (period)", "single step (while paused)"),
+    ("[ / ]", "slow motion / fast forward"),
+    ("\\", "normal speed"),
+    ("- / = , wheel", "zoom out / in"),
+    ("PgUp / PgDn", "previous / next level"),
+    ("V", "toggle force vectors"),
+    ("C", "toggle camera roll"),
+    ("F12", "screenshot"),
+    ("H", "show / hide this help"),
+    ("Esc", "quit"),
+)
+
+
+class Keyboard:
+    """Held keys and toggles → the player's intent. Never touches the world.
+
+    >>> kb = Keyboard()
+    >>> kb.key_down(pygame.K_d); kb.key_down(pygame.K_SPACE)
+    >>> intent = kb.intent(None, None)
+    >>> intent.move, intent.jump, intent.grab
+    (1.0, True, False)
+    """
+
+    def __init__(self) -> None:
+        self.held: set[int] = set()
+        self.grab = False
+        self.flipped = False
+        self._flip_pending = False
+        self._restore_pending = False
+        self._nullify_pending = False
+
+    def key_down(self, key: int) -> None:
+        self.held.add(key)
+        if key == pygame.K_e:
+            self.grab = not self.grab
+        elif key == pygame.K_g:
+            if self.flipped:
+                self._restore_pending = True
+            else:
+                self._flip_pending = True
+            self.flipped = not self.flipped
+        elif key == pygame.K_x:
+            self._nullify_pending = True
+
+    def key_up(self, key: int) -> None:
+        self.held.discard(key)
+
+    def _axis(self, minus: tuple[int, ...], plus: tuple[int, ...]) -> float:
+        return float(any(k in self.held for k in plus)) - float(any(k in self.held for k in minus))
+
+    def intent(self, gravity: Vec | None, target: str | None) -> Intent:
+        """The intent now. ``gravity``: the gravity at the player (m/s²), used to flip it;
+        ``target``: the body to nullify when X was pressed. One-shot actions are consumed."""
+        flip: Vec | None = None
+        if self._flip_pending and gravity is not None and gravity != (0.0, 0.0):
+            flip = (-gravity[0], -gravity[1])
+        restore = self._restore_pending
+        nullify = target if self._nullify_pending else None
+        self._flip_pending = self._restore_pending = self._nullify_pending = False
+        return Intent(
+            move=self._axis((pygame.K_a, pygame.K_LEFT), (pygame.K_d, pygame.K_RIGHT)),
+            jump=pygame.K_SPACE in self.held,
+            grab=self.grab,
+            push=pygame.K_f in self.held,
+            climb=self._axis((pygame.K_s, pygame.K_DOWN), (pygame.K_w, pygame.K_UP)),
+            gravity=flip,
+            restore_gravity=restore,
+            nullify=nullify,
+        )
+
+
+# -- session: one run of one level ---------------------------------------------------------------
+
+
+class Session:
+    """One run of a level: the show, the intent source (keyboard or a replay) and the recorder.
+
+    :meth:`input_hook` runs in the world's INPUTS stage (after the level's own scripts, so the
+    keyboard wins): it writes the player's intent and records it.
+    """
+
+    def __init__(self, show: Show, replay: Replay | None = None) -> None:
+        self.show = show
+        self.keyboard = Keyboard()
+        self.playback = replay
+        self.recorder: Recorder | None = None
+        player = show.player
+        if player is not None and player in show.controllers:
+            self.recorder = Recorder(level=show.name, dt=show.world.config.dt, actor=player)
+            show.world.on(Stage.INPUTS, self.input_hook)
+        elif replay is not None:
+            raise ValueError(f"{show.name}: the replay drives {replay.actor!r}, not a controller")
+
+    @property
+    def world(self) -> World:
+        return self.show.world
+
+    @property
+    def player(self) -> Any:
+        p = self.show.player
+        return self.show.controllers.get(p) if p is not None else None
+
+    def nearest_enemy(self) -> str | None:
+        """The controller closest to the player (not the player), or None."""
+        p = self.show.player
+        if p is None:
+            return None
+        here = self.world.body(p).position
+        best: tuple[float, str] | None = None
+        for name in self.show.controllers:
+            if name != p:
+                d = (self.world.body(name).position - here).length
+                if best is None or d < best[0]:
+                    best = (d, name)
+        return best[1] if best is not None else None
+
+    def input_hook(self, world: World) -> None:
+        """INPUTS stage: the player's intent for this step (keyboard or replay), recorded."""
+        assert self.show.player is not None and self.recorder is not None
+        if self.playback is not None:
+            intent = self.playback.intent_at(world.steps)
+        else:
+            intent = self.keyboard.intent(world.gravity_at(self.show.player), self.nearest_enemy())
+        self.player.intent = intent
+        self.recorder.record(world.steps, intent)
+
+    def replay(self) -> Replay | None:
+        return self.recorder.replay() if self.recorder is not None else None
+
+
+# -- the app -------------------------------------------------------------------------------------
+
+
+def display_available() -> bool:
+    """Whether a real display can be opened (an X11/Wayland session, or not Linux)."""
+    driver = os.environ.get("SDL_VIDEODRIVER", "")
+    if driver in ("dummy", "offscreen"):
+        return False
+    session = bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+    return session or not sys.platform.startswith("linux")
+
+
+class App:
+    """The view: a surface, a camera, the HUD, and a :class:`Session` per (re)start of a level.
+
+    ``load(name)`` builds a level into a :class:`Show`; ``levels`` is the order for next/previous.
+    """
+
+    def __init__(
+        self,
+        load: Callable[[str], Show],
+        level: str,
+        *,
+        levels: Sequence[str] = (),
+        size: tuple[int, int] = (1280, 720),
+        surface: pygame.Surface | None = None,
+        replay: Replay | None = None,
+    ) -> None:
+        self.load = load
+        self.levels = list(levels) or [level]
+        self.surface = surface if surface is not None else pygame.Surface(size)
+        self.size = self.surface.get_size()
+        self.font = pygame.font.Font(None, 26)
+        self.small = pygame.font.Font(None, 20)
+        self.hud = Hud(self.font, self.small)
+        self.overlay = Overlay()
+        self.show_help = False
+        self.paused = False
+        self.speed_index = SPEEDS.index(1.0)
+        self.running = True
+        self.frames = 0
+        self._render_hz = 0.0
+        self._physics_hz = 0.0
+        self._costs = StageCosts()
+        self._replay_in = replay
+        self.finished: list[Replay] = []
+        self.level = level
+        self.start(level)
+
+    # -- levels ----------------------------------------------------------------------------------
+
+    def start(self, level: str) -> None:
+        """(Re)start ``level``: a fresh world, camera, scope and recorder."""
+        old = getattr(self, "session", None)
+        if old is not None:
+            done = old.replay()
+            if done is not None and done.steps:
+                self.finished.append(done)
+        self.level = level
+        show = self.load(level)
+        world = show.world
+        # Timing only reads the clock around each stage; the physics is the same with it on.
+        world.config = dataclasses.replace(world.config, timing=True)
+        replay = (
+            self._replay_in
+            if self._replay_in is not None and self._replay_in.level == level
+            else None
+        )
+        self.session = Session(show, replay)
+        self.accumulator = Accumulator(world.config.dt)
+        self.camera = Camera(
+            size=self.size, pixels_per_metre=show.pixels_per_metre, centre=show.camera
+        )
+        self.roll = show.roll
+        self.scope = Scope(seconds=4.0, dt=world.config.dt)
+        self._scope_steps = -1
+        self._costs = StageCosts()
+        self._follow(0.0)
+
+    def _cycle(self, delta: int) -> None:
+        i = self.levels.index(self.level) if self.level in self.levels else 0
+        self.start(self.levels[(i + delta) % len(self.levels)])
+
+    # -- events ----------------------------------------------------------------------------------
+
+    def handle(self, event: pygame.event.Event) -> None:
+        """Handle one pygame event (keys, wheel, quit)."""
+        if event.type == pygame.QUIT:
+            self.running = False
+        elif event.type == pygame.KEYDOWN:
+            self._key(event.key)
+        elif event.type == pygame.KEYUP:
+            self.session.keyboard.key_up(event.key)
+        elif event.type == pygame.MOUSEWHEEL:
+            self.camera.zoom_by(ZOOM_STEP ** float(event.y))
+
+    def _key(self, key: int) -> None:
+        kb = self.session.keyboard
+        if key == pygame.K_ESCAPE:
+            self.running = False
+        elif key == pygame.K_r:
+            self.start(self.level)
+        elif key == pygame.K_p:
+            self.paused = not self.paused
+        elif key == pygame.K_PERIOD:
+            if self.paused:
+                self.step()
+        elif key == pygame.K_LEFTBRACKET:
+            self.speed_index = max(self.speed_index - 1, 0)
+        elif key == pygame.K_RIGHTBRACKET:
+            self.speed_index = min(self.speed_index + 1, len(SPEEDS) - 1)
+        elif key == pygame.K_BACKSLASH:
+            self.speed_index = SPEEDS.index(1.0)
+        elif key == pygame.K_MINUS:
+            self.camera.zoom_by(1.0 / ZOOM_STEP)
+        elif key == pygame.K_EQUALS:
+            self.camera.zoom_by(ZOOM_STEP)
+        elif key == pygame.K_PAGEUP:
+            self._cycle(-1)
+        elif key == pygame.K_PAGEDOWN:
+            self._cycle(1)
+        elif key == pygame.K_v:
+            self.overlay = dataclasses.replace(self.overlay, vectors=not self.overlay.vectors)
+        elif key == pygame.K_c:
+            self.roll = not self.roll
+        elif key == pygame.K_h:
+            self.show_help = not self.show_help
+        elif key == pygame.K_F12:
+            self.screenshot(Path(f"playground-{self.level}-{self.world.steps:06d}.png"))
+        else:
+            kb.key_down(key)
+
+    # -- time ------------------------------------------------------------------------------------
+
+    @property
+    def world(self) -> World:
+        return self.session.world
+
+    @property
+    def speed(self) -> float:
+        return SPEEDS[self.speed_index]
+
+    def step(self) -> None:
+        """One physics step, then feed the scope."""
+        self.world.step()
+        self._sample()
+
+    def _sample(self) -> None:
+        p = self.session.show.player
+        if p is None or self.world.steps == self._scope_steps:
+            return
+        try:
+            reading = self.world.forces(p)
+            pg = self.world.perceived_gravity(p)
+        except KeyError:
+            return
+        m = self.world.body(p).mass
+        self.scope.push(math.hypot(*reading.support), m * math.hypot(*pg))
+        self._scope_steps = self.world.steps
+
+    def frame(self, elapsed: float) -> int:
+        """Advance one frame of ``elapsed`` s of wall time: physics steps, then the camera.
+        Returns the number of physics steps run."""
+        n = 0 if self.paused else self.accumulator.advance(elapsed, self.speed)
+        for _ in range(n):
+            self.step()
+        self._follow(elapsed)
+        self._costs.update(self.world.timings, elapsed)
+        if elapsed > 0.0:
+            # Rates are smoothed over about half a second; the first frame sets them.
+            a = 1.0 if self.frames == 0 else min(elapsed / 0.5, 1.0)
+            self._render_hz += a * (1.0 / elapsed - self._render_hz)
+            self._physics_hz += a * (n / elapsed - self._physics_hz)
+        self.frames += 1
+        return n
+
+    def _follow(self, elapsed: float) -> None:
+        name = self.session.show.follow
+        if name is None or name not in self.world.names:
+            self.camera.roll_toward(None, elapsed)
+            return
+        body = self.world.body(name)
+        c = body.local_to_world(body.center_of_gravity)
+        if elapsed == 0.0:
+            self.camera.centre = (c.x, c.y)
+        else:
+            self.camera.follow((c.x, c.y), elapsed)
+        up: Vec | None = None
+        if self.roll:
+            try:
+                up = self.world.perceived_up(name)
+            except KeyError:
+                up = None
+        if elapsed == 0.0 and up is not None:
+            self.camera.roll_toward(up, math.inf)
+        else:
+            self.camera.roll_toward(up, elapsed)
+
+    # -- drawing ---------------------------------------------------------------------------------
+
+    def render(self) -> pygame.Surface:
+        """Draw the world, the overlays and the HUD onto :attr:`surface`."""
+        surf = self.surface
+        surf.fill(COLOURS["background"])
+        draw_grid(surf, self.camera)
+        show = self.session.show
+        world = self.world
+        player_body = world.body(show.player) if show.player in world.names else None
+        actors = [world.body(n) for n in show.controllers if n in world.names]
+        draw_world(
+            surf, self.camera, world, player=player_body, actors=actors, overlay=self.overlay
+        )
+        if self.overlay.vectors:
+            for body in world.solver.bodies:
+                name = world.name_of(body)
+                if name is None:
+                    continue
+                ctrl = show.controllers.get(name)
+                arrows = body_arrows(world, name, _controller_forces(ctrl))
+                c = body.local_to_world(body.center_of_gravity)
+                draw_arrows(
+                    surf, self.camera, arrows, body.mass, ((c.x, c.y), world.perceived_up(name))
+                )
+            draw_legend(surf, self.small, (self.size[0] - 250, 8))
+        ctrl = self.session.player
+        state = getattr(getattr(ctrl, "state", None), "value", None)
+        notes = ["H: controls"]
+        if self.session.playback is not None:
+            notes.append("replaying")
+        self.hud.draw(
+            surf,
+            HudInfo(
+                title=show.title,
+                sim_time=world.time,
+                physics_hz=self._physics_hz,
+                render_hz=self._render_hz,
+                speed=self.speed,
+                paused=self.paused,
+                state=str(state) if state is not None else None,
+                stage_costs=self._costs.means,
+                notes=notes,
+            ),
+            self.scope if show.player is not None else None,
+        )
+        if self.show_help:
+            self.hud.draw_help(surf, CONTROLS)
+        return surf
+
+    def screenshot(self, path: Path) -> Path:
+        """Save the current picture as PNG."""
+        self.render()
+        pygame.image.save(self.surface, str(path))
+        return path
+
+    # -- loops -----------------------------------------------------------------------------------
+
+    def run_frames(self, frames: int, frame_time: float = HEADLESS_FRAME) -> None:
+        """Headless: ``frames`` frames of ``frame_time`` s each, drawing every frame."""
+        for _ in range(frames):
+            if not self.running:
+                break
+            for event in pygame.event.get():
+                self.handle(event)
+            self.frame(frame_time)
+            self.render()
+
+    def run_window(self, window: pygame.Surface) -> None:
+        """The interactive loop: events, physics by wall clock, draw, flip."""
+        clock = time.perf_counter
+        last = clock()
+        while self.running:
+            for event in pygame.event.get():
+                self.handle(event)
+            now = clock()
+            self.frame(min(now - last, 0.25))
+            last = now
+            self.render()
+            window.blit(self.surface, (0, 0))
+            pygame.display.flip()
+
+    def replays(self) -> list[Replay]:
+        """Replays of every finished session and the current one."""
+        now = self.session.replay()
+        return [*self.finished, *([now] if now is not None and now.steps else [])]
+
+
+def _controller_forces(ctrl: Any) -> dict[str, Vec]:
+    """The controller's last hover, drive, grip and push forces (N), if it reports them."""
+    forces = getattr(ctrl, "last_forces", None)
+    out: dict[str, Vec] = {}
+    if forces is None:
+        return out
+    for kind in ("hover", "drive", "grip", "push"):
+        v = getattr(forces, kind, None)
+        if v is not None:
+            out[kind] = (float(v[0]), float(v[1]))
+    return out

@@ -1,0 +1,201 @@
+"""The heads-up display: title, clocks and rates, stage costs, player state, and an oscilloscope
+strip of the player's |support force|, raw and filtered, over the last seconds of simulated time.
+
+>>> scope = Scope(seconds=1.0, dt=0.25)
+>>> for k in range(6):
+...     scope.push(float(k), float(k) / 2)
+>>> scope.raw.tolist(), scope.filtered.tolist()
+([2.0, 3.0, 4.0, 5.0], [1.0, 1.5, 2.0, 2.5])
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import pygame
+from numpy.typing import NDArray
+
+from playground.view.draw import COLOURS
+from playground.world import Stage, StageTiming
+
+__all__ = ["Hud", "HudInfo", "Scope", "StageCosts"]
+
+TEXT = (225, 228, 235)
+DIM = (150, 155, 165)
+PANEL = (0, 0, 0, 160)
+MARGIN = 8  # px between panels and the window's edge
+
+
+class Scope:
+    """A ring buffer of |support| raw and filtered (N), one sample per physics step.
+
+    ``seconds`` of history at step ``dt`` (s); :attr:`raw` and :attr:`filtered` are oldest first.
+    """
+
+    def __init__(self, seconds: float = 4.0, dt: float = 1.0 / 120.0) -> None:
+        if not (seconds > 0.0 and dt > 0.0):
+            raise ValueError(f"seconds, dt: expected numbers > 0, got {seconds!r}, {dt!r}")
+        self.capacity = max(round(seconds / dt), 2)
+        self._raw = np.zeros(self.capacity)
+        self._filtered = np.zeros(self.capacity)
+        self._count = 0
+
+    def push(self, raw: float, filtered: float) -> None:
+        """Add one step's |support| raw and filtered, N."""
+        i = self._count % self.capacity
+        self._raw[i] = raw
+        self._filtered[i] = filtered
+        self._count += 1
+
+    def clear(self) -> None:
+        self._count = 0
+
+    def _ordered(self, a: NDArray[np.float64]) -> NDArray[np.float64]:
+        if self._count <= self.capacity:
+            return a[: self._count].copy()
+        i = self._count % self.capacity
+        return np.concatenate([a[i:], a[:i]])
+
+    @property
+    def raw(self) -> NDArray[np.float64]:
+        return self._ordered(self._raw)
+
+    @property
+    def filtered(self) -> NDArray[np.float64]:
+        return self._ordered(self._filtered)
+
+
+class StageCosts:
+    """Mean wall-clock cost per step of each stage over the last ``window`` seconds of wall time."""
+
+    def __init__(self, window: float = 0.5) -> None:
+        self.window = window
+        self._snapshot: dict[Stage, tuple[float, int]] = {}
+        self._age = 0.0
+        self.means: dict[Stage, float] = {}
+
+    def update(self, timings: Mapping[Stage, StageTiming], elapsed: float) -> None:
+        """Call once per rendered frame with the world's timings and the frame's wall time, s."""
+        self._age += elapsed
+        if self._snapshot and self._age < self.window:
+            return
+        means: dict[Stage, float] = {}
+        for stage, t in timings.items():
+            total0, calls0 = self._snapshot.get(stage, (0.0, 0))
+            if t.calls > calls0:
+                means[stage] = (t.total - total0) / (t.calls - calls0)
+        if means or not self._snapshot:
+            self.means = means
+        self._snapshot = {s: (t.total, t.calls) for s, t in timings.items()}
+        self._age = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class HudInfo:
+    """What the HUD shows this frame (times in s, rates in Hz)."""
+
+    title: str
+    sim_time: float
+    physics_hz: float
+    render_hz: float
+    speed: float
+    paused: bool
+    state: str | None = None
+    stage_costs: Mapping[Stage, float] = field(default_factory=dict)
+    notes: Sequence[str] = ()
+
+
+class Hud:
+    """Draws :class:`HudInfo`, the scope and the help overlay; every panel stays in the window."""
+
+    def __init__(self, font: pygame.font.Font, small: pygame.font.Font) -> None:
+        self.font = font
+        self.small = small
+        self.rects: list[pygame.Rect] = []
+
+    def _panel(self, surf: pygame.Surface, rect: pygame.Rect) -> None:
+        panel = pygame.Surface(rect.size, pygame.SRCALPHA)
+        panel.fill(PANEL)
+        surf.blit(panel, rect.topleft)
+        self.rects.append(rect)
+
+    def _lines(
+        self,
+        surf: pygame.Surface,
+        lines: Sequence[tuple[str, tuple[int, int, int]]],
+        x: int,
+        y: int,
+    ) -> pygame.Rect:
+        font = self.small
+        h = font.get_linesize()
+        w = max((font.size(t)[0] for t, _ in lines), default=0) + 12
+        rect = pygame.Rect(x, y, w, h * len(lines) + 8)
+        self._panel(surf, rect)
+        for i, (text, colour) in enumerate(lines):
+            surf.blit(font.render(text, True, colour), (x + 6, y + 4 + i * h))
+        return rect
+
+    def draw(self, surf: pygame.Surface, info: HudInfo, scope: Scope | None) -> None:
+        """Draw the status panel (top left) and the scope strip (bottom)."""
+        self.rects = []
+        title = self.font.render(info.title, True, TEXT)
+        lines: list[tuple[str, tuple[int, int, int]]] = []
+        status = "PAUSED" if info.paused else f"×{info.speed:g}"
+        lines.append((f"t = {info.sim_time:8.3f} s   {status}", TEXT))
+        lines.append((f"physics {info.physics_hz:6.1f} Hz   render {info.render_hz:5.1f} Hz", TEXT))
+        if info.state is not None:
+            lines.append((f"player: {info.state}", COLOURS["player"]))
+        if info.stage_costs:
+            total = sum(info.stage_costs.values())
+            lines.append((f"cost per step {total * 1e6:7.1f} µs", DIM))
+            for stage, cost in info.stage_costs.items():
+                lines.append((f"  {stage.name.lower():<8} {cost * 1e6:7.1f} µs", DIM))
+        lines.extend((n, DIM) for n in info.notes)
+        head = pygame.Rect(MARGIN, MARGIN, title.get_width() + 12, title.get_height() + 6)
+        self._panel(surf, head)
+        surf.blit(title, (MARGIN + 6, MARGIN + 3))
+        self._lines(surf, lines, MARGIN, head.bottom + 2)
+        if scope is not None:
+            self._scope(surf, scope)
+
+    def _scope(self, surf: pygame.Surface, scope: Scope) -> None:
+        sw, sh = surf.get_size()
+        height = max(min(90, sh // 6), 30)
+        rect = pygame.Rect(MARGIN, sh - height - MARGIN, sw - 2 * MARGIN, height)
+        self._panel(surf, rect)
+        raw, filt = scope.raw, scope.filtered
+        label = self.small.render("|support| raw / filtered, N", True, DIM)
+        top = max(float(raw.max()) if raw.size else 0.0, float(filt.max()) if filt.size else 0.0)
+        top = top * 1.1 if top > 0.0 else 1.0
+        surf.blit(self.small.render(f"{top:.0f} N", True, DIM), (rect.x + 4, rect.y + 2))
+        surf.blit(label, (rect.right - label.get_width() - 4, rect.y + 2))
+        if raw.size < 2:
+            return
+        n = scope.capacity
+        xs = rect.x + 2 + np.arange(raw.size) * (rect.width - 4) / (n - 1)
+        for data, colour, width in (
+            (raw, COLOURS["support"], 1),
+            (filt, COLOURS["support_filtered"], 2),
+        ):
+            ys = rect.bottom - 2 - np.clip(data / top, 0.0, 1.0) * (rect.height - 4)
+            pts = np.column_stack([xs, ys]).tolist()
+            pygame.draw.lines(surf, colour, False, pts, width)
+
+    def draw_help(self, surf: pygame.Surface, lines: Sequence[tuple[str, str]]) -> None:
+        """Draw the controls (key, action) centred in the window."""
+        font = self.small
+        h = font.get_linesize()
+        kw = max(font.size(k)[0] for k, _ in lines) + 16
+        w = kw + max(font.size(a)[0] for _, a in lines) + 24
+        sw, sh = surf.get_size()
+        rect = pygame.Rect(0, 0, min(w, sw - 2 * MARGIN), min(h * len(lines) + 16, sh - 2 * MARGIN))
+        rect.center = (sw // 2, sh // 2)
+        self._panel(surf, rect)
+        for i, (key, action) in enumerate(lines):
+            y = rect.y + 8 + i * h
+            if y + h > rect.bottom:
+                break
+            surf.blit(font.render(key, True, COLOURS["player"]), (rect.x + 12, y))
+            surf.blit(font.render(action, True, TEXT), (rect.x + 12 + kw, y))

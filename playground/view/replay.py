@@ -1,0 +1,216 @@
+"""Replays: the player's intents of a session, per physics step, in a small JSON file.
+
+A replay stores, for one level and one dt, the step index at which each new intent started and
+the intent itself (only the fields that differ from :class:`~playground.intents.Intent`'s defaults).
+Steps, not times, are the key, so playing it back feeds exactly the same intent into exactly the
+same step: same level + same replay ⇒ bit-identical trajectory. Python's JSON writes floats with
+``repr``, which reads back to the same double.
+
+>>> from playground.intents import Intent
+>>> rec = Recorder(level="sandbox", dt=0.01)
+>>> for step, move in enumerate([0.0, 1.0, 1.0, -1.0]):
+...     rec.record(step, Intent(move=move))
+>>> replay = rec.replay()
+>>> [(s, i.move) for s, i in replay.changes]
+[(0, 0.0), (1, 1.0), (3, -1.0)]
+>>> replay.intent_at(2).move, replay.steps
+(1.0, 4)
+>>> Replay.from_json(replay.to_json()) == replay
+True
+"""
+
+from __future__ import annotations
+
+import bisect
+import dataclasses
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from playground.intents import Intent
+
+__all__ = ["FORMAT", "Recorder", "Replay", "ReplayError", "intent_from_dict", "intent_to_dict"]
+
+FORMAT = "playground-replay"
+VERSION = 1
+
+
+class ReplayError(ValueError):
+    """A replay file that cannot be read: says which file and what was expected."""
+
+
+def intent_to_dict(intent: Intent) -> dict[str, Any]:
+    """The fields of ``intent`` that differ from the defaults (JSON-ready: tuples become lists).
+
+    >>> intent_to_dict(Intent(move=-1.0, jump=True))
+    {'move': -1.0, 'jump': True}
+    """
+    default = Intent()
+    out: dict[str, Any] = {}
+    for f in dataclasses.fields(Intent):
+        value = getattr(intent, f.name)
+        if value != getattr(default, f.name):
+            out[f.name] = list(value) if isinstance(value, tuple) else value
+    return out
+
+
+def intent_from_dict(data: dict[str, Any], where: str = "intent") -> Intent:
+    """Rebuild an intent from :func:`intent_to_dict`'s output; unknown keys are an error."""
+    names = {f.name for f in dataclasses.fields(Intent)}
+    unknown = sorted(set(data) - names)
+    if unknown:
+        raise ReplayError(
+            f"{where}: unknown intent field(s) {unknown}; expected some of {sorted(names)}"
+        )
+    kwargs: dict[str, Any] = {k: tuple(v) if isinstance(v, list) else v for k, v in data.items()}
+    try:
+        return Intent(**kwargs)
+    except (TypeError, ValueError) as exc:
+        raise ReplayError(f"{where}: {exc}") from None
+
+
+@dataclass(frozen=True, slots=True)
+class Replay:
+    """A level's name, its dt (s), the number of steps, and the intent changes (step, intent)."""
+
+    level: str
+    dt: float
+    steps: int
+    changes: tuple[tuple[int, Intent], ...]
+    actor: str = "player"
+
+    def intent_at(self, step: int) -> Intent:
+        """The intent in force at ``step`` (the default intent before the first change)."""
+        i = bisect.bisect_right([s for s, _ in self.changes], step) - 1
+        return self.changes[i][1] if i >= 0 else Intent()
+
+    def to_json(self) -> str:
+        doc = {
+            "format": FORMAT,
+            "version": VERSION,
+            "level": self.level,
+            "dt": self.dt,
+            "steps": self.steps,
+            "actor": self.actor,
+            "changes": [[s, intent_to_dict(i)] for s, i in self.changes],
+        }
+        return json.dumps(doc, indent=1)
+
+    @classmethod
+    def from_json(cls, text: str, where: str = "replay") -> Replay:
+        """Parse a replay document; errors name ``where`` and what was expected."""
+        try:
+            doc = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise ReplayError(f"{where}: not JSON ({exc})") from None
+        if not isinstance(doc, dict) or doc.get("format") != FORMAT:
+            raise ReplayError(f"{where}: expected a JSON object with format {FORMAT!r}")
+        if doc.get("version") != VERSION:
+            raise ReplayError(f"{where}: version: expected {VERSION}, got {doc.get('version')!r}")
+        level, dt, steps = doc.get("level"), doc.get("dt"), doc.get("steps")
+        if not isinstance(level, str):
+            raise ReplayError(f"{where}: level: expected a level name, got {level!r}")
+        if not (isinstance(dt, float) and math.isfinite(dt) and dt > 0.0):
+            raise ReplayError(f"{where}: dt: expected a number of seconds > 0, got {dt!r}")
+        if not (isinstance(steps, int) and steps >= 0):
+            raise ReplayError(f"{where}: steps: expected an integer >= 0, got {steps!r}")
+        raw = doc.get("changes")
+        if not isinstance(raw, list):
+            raise ReplayError(f"{where}: changes: expected a list of [step, intent]")
+        changes: list[tuple[int, Intent]] = []
+        last = -1
+        for k, entry in enumerate(raw):
+            here = f"{where}: changes[{k}]"
+            ok = isinstance(entry, list) and len(entry) == 2
+            if not ok or not isinstance(entry[0], int) or not isinstance(entry[1], dict):
+                raise ReplayError(f"{here}: expected [step, {{intent fields}}], got {entry!r}")
+            if entry[0] <= last:
+                raise ReplayError(f"{here}: steps must increase, got {entry[0]} after {last}")
+            last = entry[0]
+            changes.append((entry[0], intent_from_dict(entry[1], here)))
+        actor = doc.get("actor", "player")
+        if not isinstance(actor, str):
+            raise ReplayError(f"{where}: actor: expected a body name, got {actor!r}")
+        return cls(level=level, dt=dt, steps=steps, changes=tuple(changes), actor=actor)
+
+    def to_inputs(self) -> str:
+        """The replay as a level's scripted input timeline (TOML ``[[inputs]]`` tables).
+
+        Paste it into a level file and the bug found by hand becomes a regression test. Times are
+        ``step·dt`` (s), the exact start time of the step that first held the intent.
+
+        >>> from playground.intents import Intent
+        >>> r = Replay("rest", 0.5, 3, ((0, Intent()), (2, Intent(move=-1.0, gravity=(0.0, 1.0)))))
+        >>> print(r.to_inputs())
+        [[inputs]]
+        t = 0.0
+        actor = "player"
+        <BLANKLINE>
+        [[inputs]]
+        t = 1.0
+        actor = "player"
+        move = -1.0
+        gravity = [0.0, 1.0]
+        <BLANKLINE>
+        """
+        out: list[str] = []
+        for step, intent in self.changes:
+            out += ["[[inputs]]", f"t = {step * self.dt!r}", f"actor = {json.dumps(self.actor)}"]
+            for key, value in intent_to_dict(intent).items():
+                out.append(f"{key} = {_toml(value)}")
+            out.append("")
+        return "\n".join(out)
+
+    def save(self, path: str | Path) -> None:
+        Path(path).write_text(self.to_json() + "\n", encoding="utf-8")
+
+    @classmethod
+    def load(cls, path: str | Path) -> Replay:
+        p = Path(path)
+        try:
+            text = p.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise ReplayError(f"{p}: cannot read the replay ({exc.strerror})") from None
+        return cls.from_json(text, where=str(p))
+
+
+def _toml(value: Any) -> str:
+    """A TOML literal for an intent field value (bool, number, string or a list of numbers)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float | int):
+        return repr(float(value))
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    return json.dumps(str(value))
+
+
+class Recorder:
+    """Collects the intent applied at each physics step into a :class:`Replay`."""
+
+    def __init__(self, *, level: str, dt: float, actor: str = "player") -> None:
+        self.level = level
+        self.dt = dt
+        self.actor = actor
+        self._changes: list[tuple[int, Intent]] = []
+        self._steps = 0
+
+    def record(self, step: int, intent: Intent) -> None:
+        """Record ``intent`` as the one applied at ``step`` (steps must come in order)."""
+        if step != self._steps:
+            raise ValueError(f"step: expected {self._steps} (steps in order), got {step}")
+        last = self._changes[-1][1] if self._changes else Intent()
+        if not self._changes or intent != last:
+            self._changes.append((step, intent))
+        self._steps = step + 1
+
+    def replay(self) -> Replay:
+        return Replay(
+            level=self.level,
+            dt=self.dt,
+            steps=self._steps,
+            changes=tuple(self._changes),
+            actor=self.actor,
+        )
