@@ -202,8 +202,9 @@ class Keyboard:
 class Session:
     """One run of a level: the show, the intent source (keyboard or a replay) and the recorder.
 
-    :meth:`input_hook` runs in the world's INPUTS stage (after the level's own scripts, so the
-    keyboard wins): it writes the player's intent and records it.
+    :meth:`input_hook` runs once per step in the world's INPUTS stage: it reads the keyboard (or
+    the replay), records the intent, and hands it to the player's controller, whose intent source
+    the session becomes (it replaces a level's scripted input while someone plays).
     """
 
     def __init__(self, show: Show, replay: Replay | None = None) -> None:
@@ -211,9 +212,14 @@ class Session:
         self.keyboard = Keyboard()
         self.playback = replay
         self.recorder: Recorder | None = None
+        self.current = Intent()
         player = show.player
         if player is not None and player in show.controllers:
             self.recorder = Recorder(level=show.name, dt=show.world.config.dt, actor=player)
+            ctrl = show.controllers[player]
+            if hasattr(ctrl, "source"):
+                # The keyboard (or the replay) replaces the level's script for the player.
+                ctrl.source = self
             show.world.on(Stage.INPUTS, self.input_hook)
         elif replay is not None:
             raise ValueError(f"{show.name}: the replay drives {replay.actor!r}, not a controller")
@@ -248,8 +254,13 @@ class Session:
             intent = self.playback.intent_at(world.steps)
         else:
             intent = self.keyboard.intent(world.gravity_at(self.show.player), self.nearest_enemy())
+        self.current = intent
         self.player.intent = intent
         self.recorder.record(world.steps, intent)
+
+    def intent(self, t: float) -> Intent:
+        """The player's intent source (replaces a level's script): this step's intent."""
+        return self.current
 
     def replay(self) -> Replay | None:
         return self.recorder.replay() if self.recorder is not None else None

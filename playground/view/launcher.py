@@ -1,0 +1,201 @@
+"""Launching the view: a level by name into a :class:`~playground.view.app.Show`, the
+``playground play`` command (window or headless), and replays played back without drawing.
+
+Headless means ``SDL_VIDEODRIVER=dummy`` and only ``pygame.display`` and ``pygame.font``
+initialised (never audio): it runs on CI machines without a display or a sound card.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import pygame
+
+from playground.view.app import App, Session, Show, display_available
+from playground.view.replay import Replay, ReplayError
+
+__all__ = [
+    "DEFAULT_LEVEL",
+    "add_play_arguments",
+    "attach_replay",
+    "init_headless",
+    "level_names",
+    "play",
+    "play_args",
+    "replay_level",
+    "run_play",
+    "show_level",
+    "show_scene",
+]
+
+DEFAULT_LEVEL = "sandbox"
+WINDOW = (1280, 720)  # px: the default window size
+
+
+def init_headless() -> None:
+    """Initialise pygame for off-screen drawing: the dummy video driver, display and font only."""
+    os.environ["SDL_VIDEODRIVER"] = "dummy"
+    pygame.display.init()
+    pygame.font.init()
+
+
+def level_names() -> list[str]:
+    """The shipped levels, by name, in the order next/previous cycles through them."""
+    from playground.level import shipped
+
+    return sorted(shipped())
+
+
+def show_scene(name: str, scene: Any) -> Show:
+    """A built :class:`playground.scene.Scene` as the view sees it."""
+    level = scene.level
+    world = scene.world
+    controllers = dict(scene.controllers)
+    player = "player" if "player" in controllers else next(iter(controllers), None)
+    follow = level.view.follow if level.view.follow in world.names else player
+    return Show(
+        name=name,
+        world=world,
+        title=level.title,
+        description=level.description,
+        controllers=controllers,
+        player=player,
+        follow=follow,
+        camera=tuple(level.view.camera),
+        pixels_per_metre=float(level.view.pixels_per_metre),
+        roll=bool(level.view.roll),
+    )
+
+
+def show_level(level: str) -> Show:
+    """Load and build a level (a path or a shipped name) for the view."""
+    from playground.level import find, load
+    from playground.scene import build
+
+    path = find(level)
+    return show_scene(path.stem, build(load(path)))
+
+
+def attach_replay(show: Show, replay: Replay) -> Session:
+    """Make ``replay`` drive the player of ``show`` from its first step (checks level and dt)."""
+    if replay.level != show.name:
+        raise ReplayError(f"the replay is of level {replay.level!r}, not {show.name!r}")
+    dt = show.world.config.dt
+    if replay.dt != dt:
+        raise ReplayError(f"the replay was recorded at dt = {replay.dt!r} s, the level has {dt!r}")
+    if show.world.steps != 0:
+        raise ReplayError(
+            f"{show.name}: a replay starts at step 0, the world is at step {show.world.steps}"
+        )
+    return Session(show, replay)
+
+
+def replay_level(level: str, replay: Replay) -> Show:
+    """Build ``level``, play ``replay`` headless (no drawing at all) and return the final show."""
+    show = show_level(level)
+    attach_replay(show, replay)
+    for _ in range(replay.steps):
+        show.world.step()
+    return show
+
+
+def play(
+    level: str = DEFAULT_LEVEL,
+    *,
+    headless: bool = False,
+    frames: int | None = None,
+    screenshot: str | None = None,
+    replay_out: str | None = None,
+    size: tuple[int, int] = WINDOW,
+) -> int:
+    """``playground play``: open ``level`` in a window (or off screen); returns an exit code.
+
+    Without a display and without ``headless`` it says so and returns 2. Headless runs
+    ``frames`` frames (default 120) of 1/60 s each and saves ``screenshot`` if given. On exit the
+    player's inputs since the last (re)start are written to ``replay_out`` if given.
+    """
+    from playground.level import LevelError
+
+    if not headless and not display_available():
+        print(
+            "playground play: no display found (DISPLAY/WAYLAND_DISPLAY unset). "
+            "Use --headless (e.g. --headless --frames 120 --screenshot out.png).",
+            file=sys.stderr,
+        )
+        return 2
+    names = level_names()
+    try:
+        show_level(level)
+    except LevelError as exc:
+        print(f"playground play: {exc}", file=sys.stderr)
+        return 1
+    if headless:
+        init_headless()
+        app = App(show_level, level, levels=names, size=size)
+        app.run_frames(120 if frames is None else frames)
+    else:
+        pygame.display.init()
+        pygame.font.init()
+        try:
+            window = pygame.display.set_mode(size, pygame.RESIZABLE)
+        except pygame.error as exc:
+            print(
+                f"playground play: cannot open a window ({exc}); use --headless.",
+                file=sys.stderr,
+            )
+            return 2
+        pygame.display.set_caption("playground")
+        app = App(show_level, level, levels=names, size=size)
+        if frames is not None:
+            app.run_frames(frames)
+        else:
+            app.run_window(window)
+    if screenshot is not None:
+        app.screenshot(Path(screenshot))
+    if replay_out is not None:
+        replays = app.replays()
+        if replays:
+            replays[-1].save(replay_out)
+    pygame.quit()
+    return 0
+
+
+def play_args(argv: Sequence[str] | None = None) -> int:
+    """A stand-alone entry for ``python -m playground.view.launcher`` (same options as
+    ``playground play``)."""
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="playground play")
+    add_play_arguments(parser)
+    return run_play(parser.parse_args(argv))
+
+
+def add_play_arguments(parser: Any) -> None:
+    """The options of ``playground play`` (for the CLI's subparser)."""
+    parser.add_argument("level", nargs="?", default=DEFAULT_LEVEL, help="level name or path")
+    parser.add_argument("--headless", action="store_true", help="render off screen")
+    parser.add_argument("--frames", type=int, default=None, help="frames to run, then exit")
+    parser.add_argument("--screenshot", default=None, help="save the last frame as PNG")
+    parser.add_argument("--replay-out", default=None, help="write the session's inputs here")
+
+
+def run_play(args: Any) -> int:
+    """Run ``playground play`` from parsed arguments."""
+    if args.frames is not None and args.frames < 0:
+        print(f"playground play: --frames: expected >= 0, got {args.frames}", file=sys.stderr)
+        return 2
+    return play(
+        args.level,
+        headless=args.headless,
+        frames=args.frames,
+        screenshot=args.screenshot,
+        replay_out=args.replay_out,
+    )
+
+
+if __name__ == "__main__":
+    sys.exit(play_args())
