@@ -3,6 +3,7 @@
 The core imports pymunk and numpy only; the desktop view lives in ``playground.view``.
 """
 
+from playground.controller import Controller, ControllerConfig, ControllerForces, GroundHit, State
 from playground.forces import BodyForces, Category, ForceLedger, ForceSolver
 from playground.gravity import (
     GravityField,
@@ -14,6 +15,7 @@ from playground.gravity import (
     Zone,
     Zones,
 )
+from playground.intents import Idle, Intent, IntentSource, Patrol, Script
 from playground.movers import Circle, Elevator, Mover, Sine, Spin, Waypoints, ring_room
 from playground.perception import PerceivedGravity, Perception
 from playground.world import Stage, StageTiming, World, WorldConfig
@@ -22,20 +24,30 @@ __all__ = [
     "BodyForces",
     "Category",
     "Circle",
+    "Controller",
+    "ControllerConfig",
+    "ControllerForces",
     "Elevator",
     "ForceLedger",
     "ForceSolver",
     "GravityField",
     "GravityRule",
+    "GroundHit",
+    "Idle",
+    "Intent",
+    "IntentSource",
     "Mover",
+    "Patrol",
     "PerceivedGravity",
     "Perception",
     "Radial",
     "RotatingRoom",
+    "Script",
     "Sine",
     "Spin",
     "Stage",
     "StageTiming",
+    "State",
     "Turn",
     "Uniform",
     "Waypoints",

@@ -1,0 +1,728 @@
+"""The capsule player controller: hover, drive, balance, jump, grab, push — all relative to up.
+
+A :class:`Controller` is a dynamic capsule that moves only through forces, within budgets. Its
+"up" is the filtered perceived gravity while it is supported and the gravity field at the body
+while airborne, so the same code works on a floor, a ceiling, a planet or inside a spinning ring.
+Every force goes through ``world.apply_force`` with its category, so the solver's support force and
+perceived gravity stay right. An enemy is the same controller with another intent source.
+
+>>> from playground.world import World
+>>> world = World()
+>>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+>>> player = Controller(world, "player", position=(0.0, 1.0))
+>>> world.run(2.0)
+>>> player.state.value, round(player.probe.distance, 3)
+('grounded', 0.95)
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, fields
+from enum import Enum
+
+import pymunk
+
+from playground._validate import finite, positive
+from playground.forces import Category
+from playground.gravity import GravityRule
+from playground.intents import IDLE, Intent, IntentSource
+from playground.world import Stage, World
+
+__all__ = ["Controller", "ControllerConfig", "ControllerForces", "GroundHit", "State"]
+
+Vec = tuple[float, float]
+TWO_PI = 2.0 * math.pi
+_ZERO: Vec = (0.0, 0.0)
+_groups = itertools.count(1)
+
+
+class State(Enum):
+    """What the controller is doing; the world, the view and tests read it."""
+
+    GROUNDED = "grounded"
+    AIRBORNE = "airborne"
+    HANGING = "hanging"
+    OFF_BALANCE = "off_balance"
+    GETTING_UP = "getting_up"
+    CRUSHED = "crushed"
+
+
+@dataclass(frozen=True, slots=True)
+class ControllerConfig:
+    """Body, sensing and force budgets; defaults fit a 70 kg, 1.8 m person.
+
+    Attributes:
+        mass: kg.
+        height: capsule length, end to end, m.
+        radius: capsule radius, m (less than half the height).
+        lock_rotation: infinite moment of inertia: the capsule never tips (no balance needed).
+        ride_height: distance held from the probe hit to the capsule's centre, m. Above half the
+            height, so the feet hover a few centimetres over the ground and the capsule never
+            scrapes it while walking.
+        probe_length: how far the ground probe reaches from the centre along −up, m.
+        probe_radius: radius of the probe's swept circle, m.
+        hover_frequency: natural frequency of the hover spring, Hz (k = m·(2πf)²).
+        hover_damping: damping ratio of the hover spring (c = 2ζ·m·2πf); 1 is critical.
+        max_slope: steepest walkable ground, rad between its normal and up.
+        max_speed: walking speed at full move input, m/s.
+        drive_time: time constant with which the drive closes the gap to its goal velocity, s.
+        traction: foot friction coefficient: the drive is also bounded by traction × the hover
+            force (no normal force, no traction).
+        ground_force: drive force budget on the ground, N.
+        air_force: steering force budget in the air, N (never used to brake).
+        balance_frequency: natural frequency of the upright PD, Hz.
+        balance_damping: damping ratio of the upright PD.
+        balance_torque: balance torque budget, N·m.
+        balance_loss_time: needing more than the budget this long while supported loses
+            balance, s.
+        settle_speed: below this speed relative to the ground a fallen body counts as still, m/s.
+        settle_spin: below this angular speed a fallen body counts as still, rad/s.
+        settle_time: how long a fallen body must stay still before getting up, s.
+        getup_time: how long getting up takes, s.
+        jump_speed: take-off speed along up relative to the ground, m/s.
+        coyote_time: a jump still works this long after leaving the ground, s.
+        jump_buffer: a jump press is remembered this long before landing, s.
+        grab_reach: how far beyond the head the hands reach, m.
+        grip_force: grip budget (the joint's max force), N.
+        grip_slip: the grip lets go when its anchors drift this far apart, m.
+        climb_speed: speed of the grip along the held body at full climb input, m/s.
+        push_force: push budget, N.
+        crush_force: crushed when the load from above exceeds this, N.
+    """
+
+    mass: float = 70.0
+    height: float = 1.8
+    radius: float = 0.25
+    lock_rotation: bool = False
+    ride_height: float = 0.95
+    probe_length: float = 1.4
+    probe_radius: float = 0.1
+    hover_frequency: float = 5.0
+    hover_damping: float = 1.0
+    max_slope: float = 0.7
+    max_speed: float = 4.0
+    drive_time: float = 0.05
+    traction: float = 1.0
+    ground_force: float = 350.0
+    air_force: float = 70.0
+    balance_frequency: float = 2.0
+    balance_damping: float = 1.0
+    balance_torque: float = 600.0
+    balance_loss_time: float = 0.3
+    settle_speed: float = 0.3
+    settle_spin: float = 0.5
+    settle_time: float = 0.5
+    getup_time: float = 1.0
+    jump_speed: float = 4.0
+    coyote_time: float = 0.1
+    jump_buffer: float = 0.15
+    grab_reach: float = 0.3
+    grip_force: float = 2000.0
+    grip_slip: float = 0.1
+    climb_speed: float = 0.5
+    push_force: float = 1000.0
+    crush_force: float = 1500.0
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.lock_rotation, bool):
+            raise ValueError(f"lock_rotation: expected a bool, got {self.lock_rotation!r}")
+        non_negative = {"traction", "air_force", "coyote_time", "jump_buffer", "climb_speed"}
+        for f in fields(self):
+            if f.name == "lock_rotation":
+                continue
+            value = getattr(self, f.name)
+            if f.name in non_negative:
+                finite(f.name, value)
+                if value < 0.0:
+                    raise ValueError(f"{f.name}: expected a number >= 0, got {value!r}")
+            else:
+                positive(f.name, value)
+        if self.radius >= self.height / 2.0:
+            raise ValueError(
+                f"radius: expected less than half the height ({self.height / 2.0} m), "
+                f"got {self.radius!r}"
+            )
+        if self.ride_height >= self.probe_length:
+            raise ValueError(
+                f"ride_height: expected less than probe_length ({self.probe_length} m), "
+                f"got {self.ride_height!r}"
+            )
+        if self.max_slope >= math.pi / 2.0:
+            raise ValueError(f"max_slope: expected less than π/2 rad, got {self.max_slope!r}")
+
+    @property
+    def half_length(self) -> float:
+        """Half the distance between the capsule's two end-cap centres, m."""
+        return self.height / 2.0 - self.radius
+
+
+@dataclass(frozen=True, slots=True)
+class GroundHit:
+    """What the ground probe found (plain values except the hit body).
+
+    Attributes:
+        body: the body hit.
+        point: the hit point on its surface, m.
+        normal: the surface normal there (unit, pointing out of the ground).
+        distance: from the hit point to the capsule's centre along up, m.
+        ground_velocity: velocity of the ground at the hit point, m/s.
+        walkable: the normal is within ``max_slope`` of up.
+    """
+
+    body: pymunk.Body
+    point: Vec
+    normal: Vec
+    distance: float
+    ground_velocity: Vec
+    walkable: bool
+
+
+@dataclass(frozen=True, slots=True)
+class ControllerForces:
+    """The forces the controller put on its own body in the last step (N, N·m).
+
+    ``grip`` is the joint force of the step before (a joint's force is known only after the
+    step it acts in).
+    """
+
+    hover: Vec = _ZERO
+    drive: Vec = _ZERO
+    grip: Vec = _ZERO
+    push: Vec = _ZERO
+    balance_torque: float = 0.0
+
+
+_NO_FORCES = ControllerForces()
+
+
+class Controller:
+    """A force-driven capsule player (or enemy) in a :class:`World`.
+
+    The model, each step, all along the controller's ``up``:
+
+    - **probe**: a circle swept from the centre along −up (``probe_length``) finds the ground.
+    - **hover**: a damped spring on the height over the hit point and on the velocity relative to
+      the ground point, ``F = m·g_n + k·(ride − h) − c·v_rel·n`` with ``k = m(2πf)²``,
+      ``c = 2ζm·2πf``, and the gravity into the ground as feed-forward so it rests exactly at ride
+      height. It acts along the ground normal n (on flat ground under an upright player, n = up):
+      a spring along a tilted up would read a slant distance and sag whenever the player leans
+      (perceived up tilts while accelerating), while along n the hover and the drive are exactly a
+      contact's normal and friction parts. It only pushes (a floor cannot pull), so jumping off or
+      a gravity flip is never held back.
+    - **drive**: toward ``ground velocity + move·max_speed`` along the ground tangent with time
+      constant ``drive_time``, plus the tangential gravity (so slopes hold), bounded by
+      ``ground_force`` and by ``traction × hover force``.
+    - **balance**: a PD torque toward up, bounded by ``balance_torque``. Needing more than the
+      budget for ``balance_loss_time`` while supported loses balance (hover, drive and balance let
+      go); once still for ``settle_time`` it gets up over ``getup_time``.
+    - **jump**, **grab/hang/climb**, **push**, **gravity switches**: see the config.
+
+    Newton's third law: hover, drive, jump and balance react on the ground body at the hit point,
+    push on the pushed body. The reactions are SUPPORT forces on the ground body too, because they
+    stand in for a contact on both sides: a crate the player stands on must read the player's
+    weight as a contact load (its accelerometer reads its own weight's worth, not the player's).
+    Hover, drive, jump and push are SUPPORT on the player; air steering is APPLIED (nobody feels
+    it); the grip is a real joint, so the solver reads it as an engine force.
+    """
+
+    def __init__(
+        self,
+        world: World,
+        name: str,
+        position: tuple[float, float],
+        config: ControllerConfig = ControllerConfig(),
+        source: IntentSource | None = None,
+        angle: float = 0.0,
+    ) -> None:
+        if not isinstance(config, ControllerConfig):
+            raise ValueError(f"config: expected a ControllerConfig, got {config!r}")
+        finite("angle", angle)
+        omega = TWO_PI * config.hover_frequency
+        if omega * world.config.dt >= 2.0:
+            raise ValueError(
+                f"hover_frequency: 2π·f·dt must stay below 2 for a stable spring; with dt = "
+                f"{world.config.dt} s expected f < {2.0 / (TWO_PI * world.config.dt):.3g} Hz, "
+                f"got {config.hover_frequency!r}"
+            )
+        self.world = world
+        self.name = name
+        self.config = config
+        self.source = source
+        half = config.half_length
+        moment = (
+            math.inf
+            if config.lock_rotation
+            else pymunk.moment_for_segment(config.mass, (0.0, -half), (0.0, half), config.radius)
+        )
+        body = pymunk.Body(config.mass, moment)
+        body.position = position
+        body.angle = angle
+        shape = pymunk.Segment(body, (0.0, -half), (0.0, half), config.radius)
+        shape.friction = 0.8
+        group = next(_groups)
+        shape.filter = pymunk.ShapeFilter(group=group)
+        self._filter = pymunk.ShapeFilter(group=group)
+        self.body = body
+        self.shape = shape
+        world.add(name, body, shape)
+        world.track(name)
+
+        self._k = config.mass * omega * omega
+        self._c = 2.0 * config.hover_damping * config.mass * omega
+        self._cos_slope = math.cos(config.max_slope)
+        self._wb = TWO_PI * config.balance_frequency
+
+        self.intent: Intent = IDLE
+        self.state = State.AIRBORNE
+        g = world.gravity_at(name)
+        self.up: Vec = _unit_or(-g[0], -g[1], (0.0, 1.0))
+        self.probe: GroundHit | None = None
+        self.last_forces: ControllerForces = _NO_FORCES
+        self.load: float = 0.0
+        """Load from above (contacts and the push's reaction along −up) of the last step, N."""
+        self.joint: pymunk.PivotJoint | None = None
+        self._held_shape: pymunk.Shape | None = None
+        self._jump_held = False
+        self._jump_pressed_at = -math.inf
+        self._grounded_at = -math.inf
+        self._last_ground: GroundHit | None = None
+        self._rising = False
+        self._saturated = 0.0
+        self._still = 0.0
+        self._getup_at = 0.0
+        self._getup_from = 0.0
+        self._gravity_set: Vec | None = None
+        self._nullified: str | None = None
+
+        if source is not None:
+            world.on(Stage.INPUTS, self._read_source)
+        world.on(Stage.CONTROL, self._control)
+
+    # -- reading ---------------------------------------------------------------------------------
+
+    @property
+    def axis(self) -> Vec:
+        """The capsule's own up: its local +y in world coordinates (unit)."""
+        r = self.body.rotation_vector
+        return (-r.y, r.x)
+
+    @property
+    def tilt(self) -> float:
+        """Signed angle from the capsule's axis to ``up``, rad (CCW positive)."""
+        ax, ay = self.axis
+        ux, uy = self.up
+        return math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
+
+    @property
+    def grip(self) -> float:
+        """Magnitude of the grip joint's force in the last step, N (0 when not hanging)."""
+        if self.joint is None:
+            return 0.0
+        cfg = self.world.config
+        return float(self.joint.impulse) / (cfg.dt / cfg.substeps)
+
+    # -- the step --------------------------------------------------------------------------------
+
+    def _read_source(self, world: World) -> None:
+        assert self.source is not None
+        self.intent = self.source.intent(world.time)
+
+    def _control(self, world: World) -> None:
+        cfg = self.config
+        body = self.body
+        dt = world.config.dt
+        t = world.time
+        it = self.intent
+        self._gravity_actions(world, it)
+        gx, gy = world.gravity_at(self.name)
+
+        # Up: perceived while supported, the field while airborne (it sees where it will land).
+        supported = self.state not in (State.AIRBORNE, State.OFF_BALANCE)
+        if supported:
+            ux, uy = world.perceived_up(self.name)
+            if not (math.isfinite(ux) and math.isfinite(uy)):
+                ux, uy = _unit_or(-gx, -gy, self.up)
+        else:
+            ux, uy = _unit_or(-gx, -gy, self.up)
+        self.up = (ux, uy)
+
+        hit = self._probe(world, ux, uy)
+        self.probe = hit
+        self.load, contacts = self._contacts(world, ux, uy)
+
+        if it.jump and not self._jump_held:
+            self._jump_pressed_at = t
+        self._jump_held = it.jump
+
+        vx, vy = body.velocity
+        gvx, gvy = hit.ground_velocity if hit is not None else _ZERO
+        v_up = (vx - gvx) * ux + (vy - gvy) * uy
+        if self._rising and (v_up <= 0.0 or hit is None):
+            self._rising = False
+
+        self._update_grip(world, it, ux, uy)
+        self._update_state(world, hit, v_up)
+        state = self.state
+
+        hover = drive = push = _ZERO
+        torque = 0.0
+        if state is State.OFF_BALANCE:
+            self.last_forces = _NO_FORCES
+            return
+
+        jumped = False
+        grounded = state in (State.GROUNDED, State.GETTING_UP, State.CRUSHED)
+        may_jump = state is State.GROUNDED or (
+            state is State.AIRBORNE and t - self._grounded_at <= cfg.coyote_time
+        )
+        if may_jump and t - self._jump_pressed_at <= cfg.jump_buffer:
+            jumped = self._jump(world, hit if hit is not None else self._last_ground, ux, uy)
+            if jumped:
+                grounded = False
+                self.state = State.AIRBORNE
+
+        if grounded and hit is not None:
+            hover_f = self._hover(world, hit, gx, gy, t)
+            hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
+            if state is not State.CRUSHED:
+                drive = self._drive(world, hit, it.move, gx, gy, hover_f, dt)
+        elif state is State.AIRBORNE and it.move != 0.0 and not jumped:
+            drive = self._steer(world, it.move, ux, uy, dt)
+
+        if it.push:
+            push = self._push(world, contacts, hit)
+        if not cfg.lock_rotation:
+            torque = self._balance(world, hit if grounded else None, ux, uy, dt)
+
+        grip = _ZERO
+        if self.joint is not None:
+            e = world.forces(self.name).engine
+            grip = _scaled(e, self.grip)
+        self.last_forces = ControllerForces(hover, drive, grip, push, torque)
+
+    # -- sensing ---------------------------------------------------------------------------------
+
+    def _probe(self, world: World, ux: float, uy: float) -> GroundHit | None:
+        """Sweep a circle from the centre along −up; the nearest other shape is the ground."""
+        cfg = self.config
+        p = self.body.position
+        length = cfg.probe_length
+        info = world.space.segment_query_first(
+            (p.x, p.y), (p.x - ux * length, p.y - uy * length), cfg.probe_radius, self._filter
+        )
+        if info is None or info.shape is None or info.shape.body is None:
+            return None
+        ground = info.shape.body
+        hx, hy = info.point
+        nx, ny = info.normal
+        gv = ground.velocity_at_world_point((hx, hy))
+        return GroundHit(
+            body=ground,
+            point=(hx, hy),
+            normal=(nx, ny),
+            distance=(p.x - hx) * ux + (p.y - hy) * uy,
+            ground_velocity=(gv.x, gv.y),
+            walkable=nx * ux + ny * uy >= self._cos_slope,
+        )
+
+    def _contacts(
+        self, world: World, ux: float, uy: float
+    ) -> tuple[float, list[tuple[pymunk.Body, Vec, Vec, float]]]:
+        """Contacts of the last step: (load from above in N, [(other body, normal from self to
+        other, contact point, normal force N)])."""
+        out: list[tuple[pymunk.Body, Vec, Vec, float]] = []
+        h = world.config.dt / world.config.substeps
+        load = 0.0
+
+        def visit(arb: pymunk.Arbiter) -> None:
+            nonlocal load
+            # Our body is the arbiter's first; total_impulse is the impulse on it.
+            jx, jy = arb.total_impulse
+            nx, ny = arb.normal
+            points = arb.contact_point_set.points
+            if not points:
+                return
+            c = points[0].point_a
+            load += max(0.0, -(jx * ux + jy * uy)) / h
+            other = arb.shapes[1].body
+            if other is None:
+                return
+            out.append((other, (nx, ny), (c.x, c.y), -(jx * nx + jy * ny) / h))
+
+        self.body.each_arbiter(visit)
+        last = self.last_forces.push
+        load += max(0.0, last[0] * ux + last[1] * uy) if last is not _ZERO else 0.0
+        return load, out
+
+    # -- states ----------------------------------------------------------------------------------
+
+    def _update_state(self, world: World, hit: GroundHit | None, v_up: float) -> None:
+        cfg = self.config
+        t = world.time
+        state = self.state
+        on_ground = hit is not None and hit.walkable and not self._rising
+        if on_ground:
+            self._last_ground = hit
+        if state is State.OFF_BALANCE:
+            if self._is_still(hit):
+                self._still += world.config.dt
+            else:
+                self._still = 0.0
+            if self._still >= cfg.settle_time and hit is not None:
+                self.state = State.GETTING_UP
+                self._getup_at = t
+                self._getup_from = hit.distance
+                self._saturated = 0.0
+            return
+        if state is State.GETTING_UP:
+            if hit is None:
+                self.state = State.AIRBORNE
+            elif t - self._getup_at >= cfg.getup_time:
+                self.state = State.GROUNDED
+                self._grounded_at = t
+            return
+        if self._saturated > cfg.balance_loss_time:
+            self._lose_balance(world)
+            return
+        if self.joint is not None:
+            self.state = State.HANGING
+            return
+        if self.load > cfg.crush_force:
+            self.state = State.CRUSHED
+        elif on_ground:
+            self.state = State.GROUNDED
+        else:
+            self.state = State.AIRBORNE
+        if self.state is not State.AIRBORNE and on_ground:
+            self._grounded_at = t
+
+    def _is_still(self, hit: GroundHit | None) -> bool:
+        cfg = self.config
+        vx, vy = self.body.velocity
+        gx, gy = hit.ground_velocity if hit is not None else _ZERO
+        spin = self.body.angular_velocity - (hit.body.angular_velocity if hit is not None else 0.0)
+        return math.hypot(vx - gx, vy - gy) < cfg.settle_speed and abs(spin) < cfg.settle_spin
+
+    def _lose_balance(self, world: World) -> None:
+        self._release(world)
+        self.state = State.OFF_BALANCE
+        self._still = 0.0
+        self._saturated = 0.0
+
+    # -- forces ----------------------------------------------------------------------------------
+
+    def _hover(self, world: World, hit: GroundHit, gx: float, gy: float, t: float) -> float:
+        cfg = self.config
+        target = cfg.ride_height
+        if self.state is State.GETTING_UP:
+            s = min(1.0, (t - self._getup_at) / cfg.getup_time)
+            target = self._getup_from + (target - self._getup_from) * s * s * (3.0 - 2.0 * s)
+        nx, ny = hit.normal
+        p = self.body.position
+        height = (p.x - hit.point[0]) * nx + (p.y - hit.point[1]) * ny
+        vx, vy = self.body.velocity
+        gvx, gvy = hit.ground_velocity
+        v_n = (vx - gvx) * nx + (vy - gvy) * ny
+        weight = cfg.mass * max(0.0, -(gx * nx + gy * ny))
+        f = max(0.0, weight + self._k * (target - height) - self._c * v_n)
+        if f > 0.0:
+            fx, fy = f * nx, f * ny
+            world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
+            world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=Category.SUPPORT)
+        return f
+
+    def _drive(
+        self,
+        world: World,
+        hit: GroundHit,
+        move: float,
+        gx: float,
+        gy: float,
+        hover: float,
+        dt: float,
+    ) -> Vec:
+        cfg = self.config
+        nx, ny = hit.normal
+        tx, ty = ny, -nx  # the surface tangent: its normal rotated by −90°
+        vx, vy = self.body.velocity
+        gvx, gvy = hit.ground_velocity
+        v_t = (vx - gvx) * tx + (vy - gvy) * ty
+        accel = (move * cfg.max_speed - v_t) / max(cfg.drive_time, dt) - (gx * tx + gy * ty)
+        budget = min(cfg.ground_force, cfg.traction * hover)
+        f = max(-budget, min(budget, cfg.mass * accel))
+        if f == 0.0:
+            return _ZERO
+        fx, fy = f * tx, f * ty
+        world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
+        world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=Category.SUPPORT)
+        return (fx, fy)
+
+    def _steer(self, world: World, move: float, ux: float, uy: float, dt: float) -> Vec:
+        """Air steering toward move·max_speed along up's tangent; it never brakes."""
+        cfg = self.config
+        tx, ty = uy, -ux
+        vx, vy = self.body.velocity
+        f = cfg.mass * (move * cfg.max_speed - (vx * tx + vy * ty)) / max(cfg.drive_time, dt)
+        if f * move <= 0.0:
+            return _ZERO
+        f = max(-cfg.air_force, min(cfg.air_force, f))
+        world.apply_force(self.body, (f * tx, f * ty), category=Category.APPLIED)
+        return (f * tx, f * ty)
+
+    def _balance(
+        self, world: World, hit: GroundHit | None, ux: float, uy: float, dt: float
+    ) -> float:
+        cfg = self.config
+        body = self.body
+        r = body.rotation_vector
+        ax, ay = -r.y, r.x
+        err = math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
+        wb = self._wb
+        need = body.moment * (
+            wb * wb * err - 2.0 * cfg.balance_damping * wb * body.angular_velocity
+        )
+        budget = cfg.balance_torque
+        torque = max(-budget, min(budget, need))
+        touching = hit is not None or self.load > 0.0 or self._touching()
+        if abs(need) > budget and touching and self.state is not State.GETTING_UP:
+            self._saturated += dt
+        else:
+            self._saturated = 0.0
+        world.ledger.add_torque(body, torque, Category.APPLIED)
+        if hit is not None and hit.body.body_type == pymunk.Body.DYNAMIC:
+            world.ledger.add_torque(hit.body, -torque, Category.SUPPORT)
+        return torque
+
+    def _touching(self) -> bool:
+        found = False
+
+        def visit(arb: pymunk.Arbiter) -> None:
+            nonlocal found
+            found = True
+
+        self.body.each_arbiter(visit)
+        return found
+
+    def _jump(self, world: World, ground: GroundHit | None, ux: float, uy: float) -> bool:
+        cfg = self.config
+        vx, vy = self.body.velocity
+        gvx, gvy = ground.ground_velocity if ground is not None else _ZERO
+        dv = cfg.jump_speed - ((vx - gvx) * ux + (vy - gvy) * uy)
+        self._jump_pressed_at = -math.inf
+        self._grounded_at = -math.inf
+        if dv <= 0.0:
+            return False
+        jx, jy = cfg.mass * dv * ux, cfg.mass * dv * uy
+        world.apply_impulse(self.body, (jx, jy), category=Category.SUPPORT)
+        if ground is not None:
+            world.apply_impulse(
+                ground.body, (-jx, -jy), point=ground.point, category=Category.SUPPORT
+            )
+        self._rising = True
+        return True
+
+    def _push(
+        self,
+        world: World,
+        contacts: list[tuple[pymunk.Body, Vec, Vec, float]],
+        hit: GroundHit | None,
+    ) -> Vec:
+        """Push the dynamic body pressing hardest on us (not the ground), away along the normal."""
+        best: tuple[pymunk.Body, Vec, Vec, float] | None = None
+        for c in contacts:
+            other = c[0]
+            if other.body_type != pymunk.Body.DYNAMIC or (hit is not None and other is hit.body):
+                continue
+            if best is None or c[3] > best[3]:
+                best = c
+        if best is None:
+            return _ZERO
+        other, (nx, ny), point, _ = best
+        f = self.config.push_force
+        world.apply_force(other, (f * nx, f * ny), point=point, category=Category.SUPPORT)
+        world.apply_force(self.body, (-f * nx, -f * ny), point=point, category=Category.SUPPORT)
+        return (-f * nx, -f * ny)
+
+    # -- grab, hang, climb -----------------------------------------------------------------------
+
+    def _update_grip(self, world: World, it: Intent, ux: float, uy: float) -> None:
+        cfg = self.config
+        joint = self.joint
+        if joint is not None:
+            a = self.body.local_to_world(joint.anchor_a)
+            held = joint.b
+            b = held.local_to_world(joint.anchor_b)
+            if not it.grab or math.hypot(a.x - b.x, a.y - b.y) > cfg.grip_slip:
+                self._release(world)
+            elif it.climb != 0.0:
+                self._climb(world, joint, it.climb)
+            return
+        if not it.grab or self.state is State.OFF_BALANCE:
+            return
+        ax, ay = self.axis
+        p = self.body.position
+        half = cfg.half_length
+        head = (p.x + ax * half, p.y + ay * half)
+        info = world.space.point_query_nearest(head, cfg.radius + cfg.grab_reach, self._filter)
+        if info is None or info.shape is None or info.shape.sensor or info.shape.body is None:
+            return
+        other = info.shape.body
+        touch = info.point
+        joint = pymunk.PivotJoint(
+            self.body, other, self.body.world_to_local(touch), other.world_to_local(touch)
+        )
+        joint.max_force = cfg.grip_force
+        joint.collide_bodies = False
+        world.space.add(joint)
+        self.joint = joint
+        self._held_shape = info.shape
+        self.state = State.HANGING
+
+    def _climb(self, world: World, joint: pymunk.PivotJoint, climb: float) -> None:
+        """Slide the held anchor along the held shape's surface."""
+        held = joint.b
+        shape = self._held_shape
+        assert shape is not None
+        p = held.local_to_world(joint.anchor_b)
+        q = shape.point_query(p)
+        nx, ny = q.gradient
+        step = climb * self.config.climb_speed * world.config.dt
+        moved = (p.x + ny * step, p.y - nx * step)
+        on_surface = shape.point_query(moved).point
+        joint.anchor_b = held.world_to_local(on_surface)
+
+    def _release(self, world: World) -> None:
+        if self.joint is not None:
+            world.space.remove(self.joint)
+            self.joint = None
+            self._held_shape = None
+
+    # -- gravity switches ------------------------------------------------------------------------
+
+    def _gravity_actions(self, world: World, it: Intent) -> None:
+        if it.restore_gravity:
+            if self._gravity_set is not None:
+                world.set_gravity_rule(self.name, None)
+                self._gravity_set = None
+        elif it.gravity is not None and it.gravity != self._gravity_set:
+            world.set_gravity_rule(self.name, GravityRule(direction=it.gravity))
+            self._gravity_set = it.gravity
+        if it.nullify is not None and it.nullify != self._nullified:
+            world.set_gravity_rule(it.nullify, GravityRule(scale=0.0))
+            self._nullified = it.nullify
+
+
+def _unit_or(x: float, y: float, fallback: Vec) -> Vec:
+    n = math.hypot(x, y)
+    return (x / n, y / n) if n > 0.0 else fallback
+
+
+def _scaled(direction: Vec, magnitude: float) -> Vec:
+    """``direction`` made unit length and scaled to ``magnitude`` (zero if it has no length)."""
+    return _mul(_unit_or(direction[0], direction[1], _ZERO), magnitude)
+
+
+def _mul(v: Vec, s: float) -> Vec:
+    return (v[0] * s, v[1] * s)
