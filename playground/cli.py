@@ -1,0 +1,195 @@
+"""The ``playground`` command: list, check and run levels headless, export the level schema.
+
+Each subcommand is a function ``cmd_<name>(args) -> exit code`` registered in :func:`parser`.
+
+``playground run LEVEL --json`` prints one JSON object::
+
+    {"level", "dt", "steps", "sim_seconds", "wall_seconds",
+     "checks": [{"name", "passed", "detail"}],
+     "bodies": {NAME: {"mass", "position", "velocity", "angle", "state",
+                       "force": {"engine", "contact", "constraint", "support", "support_filtered"},
+                       "perceived_gravity"}}}
+
+for every tracked body, at the last step, SI units, vectors as ``[x, y]``. ``state`` is null for a
+body without a controller; ``contact`` and ``constraint`` are null unless the level sets
+``settings.contact_split``; ``support_filtered`` is −m · ``perceived_gravity`` (the 1€-filtered
+support force). The exit code is 1 when a check fails.
+
+>>> main(["check", "incline"])
+ok      incline: Incline
+0
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any
+
+from playground.level import LevelError, find, load, schema, shipped
+
+__all__ = ["main", "parser"]
+
+Command = Callable[[argparse.Namespace], int]
+
+
+def cmd_list(args: argparse.Namespace) -> int:
+    """Print the shipped levels with their titles."""
+    levels = shipped()
+    width = max((len(n) for n in levels), default=0)
+    for name, path in levels.items():
+        try:
+            title = load(path).title
+        except LevelError as exc:
+            title = f"(invalid: {len(exc.problems)} problem(s); run playground check)"
+        print(f"{name:<{width}}  {title}")
+    return 0
+
+
+def cmd_check(args: argparse.Namespace) -> int:
+    """Validate level files; print every problem; exit 1 if any file has one."""
+    failed = False
+    for item in args.files:
+        try:
+            path = find(item)
+            level = load(path)
+            print(f"ok      {item}: {level.title}")
+        except LevelError as exc:
+            failed = True
+            where = f" (line {exc.line}, column {exc.column})" if exc.line is not None else ""
+            print(f"FAILED  {exc.source}{where}: {len(exc.problems)} problem(s)", file=sys.stderr)
+            for problem in exc.problems:
+                print(f"  {problem}", file=sys.stderr)
+    return 1 if failed else 0
+
+
+def _vec(v: Sequence[float]) -> list[float | None] | None:
+    out = [float(x) if math.isfinite(x) else None for x in v]
+    return None if all(x is None for x in out) else out
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    """Run a level headless, report its checks (and bodies with --json); exit 1 on a failure."""
+    from playground.expectations import watch
+    from playground.recording import recording
+    from playground.scene import build
+
+    try:
+        path = find(args.level)
+        level = load(path)
+        scene = build(level)
+    except LevelError as exc:
+        print(f"playground run: {exc}", file=sys.stderr)
+        return 2
+    seconds = level.settings.seconds if args.seconds is None else args.seconds
+    if not (math.isfinite(seconds) and seconds >= 0):
+        print(f"playground run: --seconds: expected a number >= 0, got {seconds}", file=sys.stderr)
+        return 2
+    checks = watch(scene)
+    start = time.perf_counter()
+    if args.record is not None:
+        try:
+            with recording(scene, args.record):
+                scene.run(seconds)
+        except ValueError as exc:
+            print(f"playground run: {exc}", file=sys.stderr)
+            return 2
+    else:
+        scene.run(seconds)
+    wall = time.perf_counter() - start
+    results = checks.results()
+    world = scene.world
+    if args.json:
+        bodies: dict[str, Any] = {}
+        for name in scene.tracked:
+            body = world.body(name)
+            f = world.forces(name)
+            bodies[name] = {
+                "mass": body.mass,
+                "position": _vec(body.position),
+                "velocity": _vec(body.velocity),
+                "angle": body.angle,
+                "state": scene.state(name),
+                "force": {
+                    "engine": _vec(f.engine),
+                    "contact": _vec(f.contact),
+                    "constraint": _vec(f.constraint),
+                    "support": _vec(f.support),
+                    "support_filtered": _vec(scene.support_filtered(name)),
+                },
+                "perceived_gravity": _vec(world.perceived_gravity(name)),
+            }
+        report = {
+            "level": path.stem,
+            "dt": level.settings.dt,
+            "steps": world.steps,
+            "sim_seconds": world.time,
+            "wall_seconds": wall,
+            "checks": [{"name": r.name, "passed": r.passed, "detail": r.detail} for r in results],
+            "bodies": bodies,
+        }
+        print(json.dumps(report, indent=2))
+    else:
+        print(f"{level.title}: {world.steps} steps, {world.time:g} s simulated in {wall:.3f} s")
+        for r in results:
+            print(f"  {'pass' if r.passed else 'FAIL'}  {r.detail}")
+    return 0 if all(r.passed for r in results) else 1
+
+
+def cmd_schema(args: argparse.Namespace) -> int:
+    """Print the level JSON Schema, or write it to --output."""
+    text = schema_text()
+    if args.output is None:
+        sys.stdout.write(text)
+    else:
+        Path(args.output).write_text(text, encoding="utf-8")
+    return 0
+
+
+def schema_text() -> str:
+    """The JSON Schema as the committed ``levels/level.schema.json`` holds it."""
+    return json.dumps(schema(), indent=2, ensure_ascii=False) + "\n"
+
+
+def parser() -> argparse.ArgumentParser:
+    """The argument parser: one subparser per command, each with ``func`` set."""
+    top = argparse.ArgumentParser(
+        prog="playground",
+        description="A 2D game-physics playground for force-driven player bodies.",
+    )
+    sub = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    p = sub.add_parser("list", help="list the shipped levels with their titles")
+    p.set_defaults(func=cmd_list)
+
+    p = sub.add_parser("check", help="validate level files (exit 1 with all their errors)")
+    p.add_argument("files", nargs="+", metavar="FILE", help="level files or shipped names")
+    p.set_defaults(func=cmd_check)
+
+    p = sub.add_parser("run", help="run a level headless and report its checks")
+    p.add_argument("level", metavar="LEVEL", help="a level file or a shipped level's name")
+    p.add_argument("--seconds", type=float, help="simulated seconds (default: the level's)")
+    p.add_argument("--json", action="store_true", help="print one JSON object (see docs)")
+    p.add_argument("--record", metavar="FILE", help="record every step to FILE (.csv or .npz)")
+    p.set_defaults(func=cmd_run)
+
+    p = sub.add_parser("schema", help="print the level JSON Schema")
+    p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")
+    p.set_defaults(func=cmd_schema)
+    return top
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``playground`` console script; returns the exit code."""
+    args = parser().parse_args(argv)
+    func: Command = args.func
+    return func(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

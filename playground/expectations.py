@@ -1,0 +1,340 @@
+"""Expectations: a level's checks, watched every step and judged at the end of a run.
+
+Each :class:`playground.level.Expectation` becomes a :class:`Check` that samples one body's
+quantity in the OBSERVE stage — at a time, always or eventually within a window, or as a mean over
+it — and ends as a :class:`CheckResult` whose detail reads like a test failure: the check, what was
+expected, what happened, and when.
+
+>>> from playground.level import find, load
+>>> from playground.scene import build
+>>> scene = build(load(find("incline")))
+>>> checks = watch(scene)
+>>> scene.run(scene.level.settings.seconds)
+>>> all(r.passed for r in checks.results())
+True
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from playground.filters import FilterChain, Median3, OneEuroFilter
+from playground.level import Expectation, Level
+from playground.scene import Scene
+from playground.world import Stage, World
+
+__all__ = ["UNITS", "Check", "CheckResult", "Checks", "check_names", "read", "watch"]
+
+Value = float | tuple[float, float] | str
+
+UNITS = {
+    "position": "m",
+    "velocity": "m/s",
+    "angle": "rad",
+    "angular_velocity": "rad/s",
+    "tilt": "rad",
+    "state": "",
+    "engine": "N",
+    "contact": "N",
+    "constraint": "N",
+    "contact_normal": "N",
+    "contact_friction": "N",
+    "support": "N",
+    "perceived_gravity": "m/s²",
+}
+"""The unit of each quantity, for messages."""
+
+
+@dataclass(frozen=True, slots=True)
+class CheckResult:
+    """The verdict on one expectation: its name, whether it passed, and why."""
+
+    name: str
+    passed: bool
+    detail: str
+
+
+def read(scene: Scene, body: str, quantity: str) -> Value:
+    """The current value of a quantity of a body (raw readings; SI)."""
+    world = scene.world
+    if quantity == "state":
+        return scene.state(body) or ""
+    if quantity == "tilt":
+        return scene.tilt(body)
+    b = world.body(body)
+    if quantity == "position":
+        return (float(b.position.x), float(b.position.y))
+    if quantity == "velocity":
+        return (float(b.velocity.x), float(b.velocity.y))
+    if quantity == "angle":
+        return float(b.angle)
+    if quantity == "angular_velocity":
+        return float(b.angular_velocity)
+    if quantity == "perceived_gravity":
+        return world.perceived_gravity(body)
+    forces = world.forces(body)
+    vec: tuple[float, float] = getattr(forces, quantity)
+    return vec
+
+
+def name_of(exp: Expectation) -> str:
+    """A readable default name: ``player.support.y at 2 s``."""
+    if exp.name is not None:
+        return exp.name
+    what = f"{exp.body}.{exp.quantity}"
+    if exp.filtered:
+        what += "_filtered"
+    if exp.component is not None:
+        what += f".{exp.component}"
+    if exp.check == "at":
+        return f"{what} at {exp.t:g} s"
+    if exp.window is None:
+        return f"{what} {exp.check}"
+    return f"{what} {exp.check} in [{exp.window[0]:g}, {exp.window[1]:g}] s"
+
+
+def _fmt(value: Value, unit: str) -> str:
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, tuple):
+        return f"[{value[0]:.6g}, {value[1]:.6g}] {unit}".rstrip()
+    return f"{value:.6g} {unit}".rstrip()
+
+
+class Check:
+    """One expectation, fed a sample every step by :meth:`observe`."""
+
+    def __init__(self, exp: Expectation, scene: Scene) -> None:
+        self.exp = exp
+        self.name = name_of(exp)
+        self.unit = UNITS[exp.quantity]
+        self.dt = scene.level.settings.dt
+        self._window = exp.window or (0.0, scene.level.settings.seconds)
+        self._filter: FilterChain | OneEuroFilter | None = None
+        if exp.filtered and exp.quantity != "support":
+            p = scene.level.tracking.perception
+            one_euro = OneEuroFilter(p.min_cutoff, p.beta, p.d_cutoff)
+            self._filter = FilterChain(Median3(), one_euro) if p.spike_filter else one_euro
+        self._taken: tuple[float, Value] | None = None
+        self._first_bad: tuple[float, Value] | None = None
+        self._first_good: tuple[float, Value] | None = None
+        self._closest: tuple[float, float, Value] | None = None
+        self._sum: np.ndarray | None = None
+        self._count = 0
+        self._last_time = -math.inf
+
+    # -- sampling --------------------------------------------------------------------------------
+
+    def _value(self, scene: Scene) -> Value | None:
+        exp = self.exp
+        if exp.body not in scene.world.names:
+            return None
+        if exp.quantity == "support" and exp.filtered:
+            raw: Value = scene.support_filtered(exp.body)
+        else:
+            raw = read(scene, exp.body, exp.quantity)
+        if self._filter is not None:
+            assert isinstance(raw, tuple)
+            out = self._filter.filter(np.array(raw, dtype=np.float64), self.dt)
+            raw = (float(out[0]), float(out[1]))
+        if isinstance(raw, tuple) and exp.component is not None:
+            if exp.component == "x":
+                return raw[0]
+            if exp.component == "y":
+                return raw[1]
+            return math.hypot(*raw)
+        return raw
+
+    def _in(self, t: float) -> bool:
+        half = self.dt / 2
+        return self._window[0] - half <= t <= self._window[1] + half
+
+    def observe(self, scene: Scene) -> None:
+        """Sample the quantity at the world's current time."""
+        t = scene.world.time
+        exp = self.exp
+        wanted = (
+            abs(t - exp.t) <= self.dt / 2 and self._taken is None
+            if exp.check == "at" and exp.t is not None
+            else self._in(t)
+        )
+        if not wanted and self._filter is None:
+            return
+        value = self._value(scene)
+        if value is None or not wanted:
+            return
+        self._last_time = t
+        if exp.check == "at":
+            self._taken = (t, value)
+            return
+        if exp.check == "mean":
+            v = np.asarray(value, dtype=np.float64)
+            self._sum = v if self._sum is None else self._sum + v
+            self._count += 1
+            return
+        ok, miss = self._compare(value)
+        if exp.check == "always":
+            if not ok and self._first_bad is None:
+                self._first_bad = (t, value)
+        elif ok:
+            if self._first_good is None:
+                self._first_good = (t, value)
+        elif self._closest is None or miss < self._closest[1]:
+            self._closest = (t, miss, value)
+
+    # -- judging ---------------------------------------------------------------------------------
+
+    def _compare(self, value: Value) -> tuple[bool, float]:
+        """Whether ``value`` passes, and by how much it misses (0 when it passes)."""
+        exp = self.exp
+        if exp.quantity == "state":
+            wanted = exp.one_of if exp.one_of is not None else [str(exp.equals)]
+            return (value in wanted, 0.0 if value in wanted else 1.0)
+        if exp.equals is not None:
+            assert not isinstance(exp.equals, str) and not isinstance(value, str)
+            e = np.asarray(exp.equals, dtype=np.float64)
+            v = np.asarray(value, dtype=np.float64)
+            off = float(np.hypot(*(v - e))) if e.ndim else abs(float(v - e))
+            allowed = self._allowed()
+            return (off <= allowed, max(0.0, off - allowed))
+        assert isinstance(value, float)
+        miss = 0.0
+        if exp.above is not None and not value > exp.above:
+            miss = max(miss, exp.above - value)
+        if exp.below is not None and not value < exp.below:
+            miss = max(miss, value - exp.below)
+        return (miss == 0.0 and math.isfinite(value), miss if math.isfinite(value) else math.inf)
+
+    def _allowed(self) -> float:
+        exp = self.exp
+        assert exp.equals is not None and not isinstance(exp.equals, str)
+        size = math.hypot(*exp.equals) if isinstance(exp.equals, tuple) else abs(exp.equals)
+        return exp.tolerance + exp.relative * size
+
+    def _expected(self) -> str:
+        exp = self.exp
+        if exp.quantity == "state":
+            if exp.one_of is not None:
+                return f"one of {exp.one_of}"
+            return repr(exp.equals)
+        if exp.equals is not None:
+            assert not isinstance(exp.equals, str)
+            return f"{_fmt(exp.equals, self.unit)} ± {self._allowed():.3g} {self.unit}".rstrip()
+        parts = []
+        if exp.above is not None:
+            parts.append(f"> {exp.above:g} {self.unit}".rstrip())
+        if exp.below is not None:
+            parts.append(f"< {exp.below:g} {self.unit}".rstrip())
+        return " and ".join(parts)
+
+    def _off(self, value: Value) -> str:
+        exp = self.exp
+        if exp.equals is None or isinstance(exp.equals, str) or isinstance(value, str):
+            return ""
+        e = np.asarray(exp.equals, dtype=np.float64)
+        v = np.asarray(value, dtype=np.float64)
+        off = float(np.hypot(*(v - e))) if e.ndim else abs(float(v - e))
+        unit = f" {self.unit}" if self.unit else ""
+        return f" (off by {off:.3g}{unit})"
+
+    def result(self, end: float) -> CheckResult:
+        """The verdict after a run that ended at ``end`` s."""
+        exp = self.exp
+        want = self._expected()
+        if exp.check == "at":
+            if self._taken is None:
+                return self._fail(
+                    f"expected {want} at t = {exp.t:g} s, but the run ended at "
+                    f"{end:g} s without reaching it (or the body was absent)"
+                )
+            t, value = self._taken
+            ok, _ = self._compare(value)
+            got = f"got {_fmt(value, self.unit)}{'' if ok else self._off(value)}"
+            return self._verdict(ok, f"expected {want} at t = {t:.4g} s, {got}")
+        start, stop = self._window
+        span = f"[{start:g}, {stop:g}] s"
+        if self._last_time == -math.inf:
+            return self._fail(
+                f"expected {want} in {span}, but no step fell in the window "
+                f"(the run ended at {end:g} s)"
+            )
+        short = stop - end > self.dt / 2
+        tail = f"; the run ended at {end:g} s, before the window closed" if short else ""
+        if exp.check == "mean":
+            assert self._sum is not None
+            m = self._sum / self._count
+            mean: Value = (float(m[0]), float(m[1])) if m.ndim else float(m)
+            ok, _ = self._compare(mean)
+            got = f"got {_fmt(mean, self.unit)}{'' if ok else self._off(mean)}"
+            return self._verdict(
+                ok and not short,
+                f"expected the mean over {span} to be {want}, {got} ({self._count} steps){tail}",
+            )
+        if exp.check == "always":
+            if self._first_bad is not None:
+                t, value = self._first_bad
+                return self._fail(
+                    f"expected {want} always in {span}, first broken at t = {t:.4g} s: "
+                    f"got {_fmt(value, self.unit)}{self._off(value)}"
+                )
+            return self._verdict(not short, f"expected {want} always in {span}: held{tail}")
+        if self._first_good is not None:
+            t, value = self._first_good
+            return self._verdict(
+                True,
+                f"expected {want} eventually in {span}: first at t = {t:.4g} s "
+                f"({_fmt(value, self.unit)})",
+            )
+        closest = ""
+        if self._closest is not None:
+            t, _, value = self._closest
+            closest = f"; closest at t = {t:.4g} s: got {_fmt(value, self.unit)}{self._off(value)}"
+        return self._fail(f"expected {want} eventually in {span}, never happened{closest}{tail}")
+
+    def _verdict(self, ok: bool, detail: str) -> CheckResult:
+        return CheckResult(self.name, ok, f"{self.name}: {detail}")
+
+    def _fail(self, detail: str) -> CheckResult:
+        return self._verdict(False, detail)
+
+
+def check_names(level: Level) -> list[str]:
+    """The names of a level's checks, made unique (a repeated name gets `` #2``, …)."""
+    seen: dict[str, int] = {}
+    out = []
+    for exp in level.expect:
+        name = name_of(exp)
+        n = seen.get(name, 0)
+        seen[name] = n + 1
+        out.append(f"{name} #{n + 1}" if n else name)
+    return out
+
+
+class Checks:
+    """All the checks of a scene, observing every step."""
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        self.checks = [Check(exp, scene) for exp in scene.level.expect]
+        for check, name in zip(self.checks, check_names(scene.level), strict=True):
+            check.name = name
+
+    def observe(self, world: World) -> None:
+        for check in self.checks:
+            check.observe(self.scene)
+
+    def results(self) -> list[CheckResult]:
+        """Every check's verdict, in the level's order."""
+        end = self.scene.world.time
+        return [check.result(end) for check in self.checks]
+
+
+def watch(scene: Scene) -> Checks:
+    """Attach a scene's expectations to its world (OBSERVE stage) and return them."""
+    checks = Checks(scene)
+    if checks.checks:
+        scene.world.on(Stage.OBSERVE, checks.observe)
+    return checks

@@ -1,0 +1,1029 @@
+"""Level files: the TOML format as pydantic models, and loading with errors that say where.
+
+A level is one TOML document: settings, gravity, static geometry, props, movers, joints, actors,
+tracking, events, scripted inputs, expectations, view hints, a title and a description. Every
+problem found while loading is reported at once as a :class:`LevelError` naming the file, the key
+path and what was expected; an unknown key comes with the closest valid name. Quantities are SI
+(m, kg, s, N, rad).
+
+>>> level = loads('title = "Tiny"\\ndescription = "A crate."\\n'
+...               '[[props]]\\nname = "crate"\\nposition = [0, 1]\\nmass = 5\\n'
+...               'shapes = [{kind = "box", size = [1, 1]}]\\n')
+>>> level.props[0].mass, level.settings.dt
+(5.0, 0.008333333333333333)
+>>> loads('title = "x"\\ndescription = "y"\\n[settings]\\ndtt = 0.01\\n')
+Traceback (most recent call last):
+...
+playground.level.LevelError: <string>: settings.dtt: unknown key (did you mean 'dt'?)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import difflib
+import json
+import math
+import os
+import re
+import sys
+import tomllib
+import types
+import typing
+from collections.abc import Iterator, Sequence
+from pathlib import Path
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+
+__all__ = [
+    "Level",
+    "LevelError",
+    "Problem",
+    "find",
+    "levels_dirs",
+    "load",
+    "loads",
+    "schema",
+    "shipped",
+]
+
+# -- plain types ---------------------------------------------------------------------------------
+
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
+Unit = Annotated[float, Field(ge=-1.0, le=1.0, allow_inf_nan=False)]
+Vec = tuple[Finite, Finite]
+Name = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[A-Za-z_][A-Za-z0-9_\-]*$")]
+
+STATIC = "static"
+"""The body name joints use for the fixed world."""
+
+
+class _Model(BaseModel):
+    """Every table of a level: unknown keys are errors, values are frozen."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+# -- settings ------------------------------------------------------------------------------------
+
+
+class Settings(_Model):
+    """Simulation settings (see :class:`playground.WorldConfig`)."""
+
+    dt: Positive = Field(default=1.0 / 120.0, description="Fixed step, s.")
+    substeps: int = Field(default=1, ge=1, le=64, description="space.step calls per step.")
+    iterations: int = Field(default=10, ge=1, le=1000, description="Solver iterations per substep.")
+    damping: float = Field(
+        default=1.0, gt=0.0, le=1.0, description="Fraction of velocity kept per second (1: none)."
+    )
+    collision_slop: NonNegative = Field(default=0.005, description="Allowed overlap, m.")
+    contact_split: bool = Field(
+        default=False, description="Split engine forces into contact and constraint readings."
+    )
+    seconds: Positive = Field(default=3.0, le=3600.0, description="Length of a run, s.")
+
+
+class Perception(_Model):
+    """How perceived gravity is filtered (see :class:`playground.Perception`)."""
+
+    min_cutoff: Positive = Field(default=2.0, description="1€ minimum cutoff, Hz.")
+    beta: NonNegative = Field(default=0.05, description="1€ speed coefficient.")
+    d_cutoff: Positive = Field(default=1.0, description="1€ derivative cutoff, Hz.")
+    spike_filter: bool = Field(default=True, description="Median-of-3 stage before the 1€ filter.")
+    up_threshold: Positive = Field(default=1.0, description="Below this |g| (m/s²) up is held.")
+
+
+class Tracking(_Model):
+    """Which bodies the force solver tracks (actors always are) and how they are filtered."""
+
+    bodies: list[Name] = Field(default_factory=list, description="Tracked prop names.")
+    perceive: bool = Field(default=True, description="Filter perceived gravity for tracked bodies.")
+    perception: Perception = Field(default_factory=lambda: Perception())
+
+
+class View(_Model):
+    """Hints for the desktop view."""
+
+    camera: Vec = Field(default=(0.0, 0.0), description="Camera centre at start, m.")
+    pixels_per_metre: Positive = Field(default=50.0, le=10000.0, description="Zoom, px/m.")
+    follow: Name | None = Field(default="player", description="Body the camera follows, if any.")
+    roll: bool = Field(default=False, description="Roll the camera with the followed body's up.")
+
+
+# -- gravity -------------------------------------------------------------------------------------
+
+
+class UniformGravity(_Model):
+    """The same acceleration everywhere (m/s²)."""
+
+    kind: Literal["uniform"] = "uniform"
+    g: Vec = (0.0, -9.81)
+
+
+class Turn(_Model):
+    """A scheduled turn of a rotating room's gravity, rad over s."""
+
+    start: NonNegative
+    angle: Finite
+    duration: NonNegative = 0.0
+
+
+class RotatingGravity(_Model):
+    """Uniform gravity whose direction turns (rad from +x; −π/2 is down)."""
+
+    kind: Literal["rotating"]
+    magnitude: NonNegative = 9.81
+    angle: Finite = -math.pi / 2
+    rate: Finite = Field(default=0.0, description="Constant turning rate, rad/s.")
+    turns: list[Turn] = Field(default_factory=list)
+
+
+class RadialGravity(_Model):
+    """Gravity toward a centre (a small planet)."""
+
+    kind: Literal["radial"]
+    center: Vec = (0.0, 0.0)
+    surface_gravity: Finite = 9.81
+    radius: Positive = 10.0
+    softening: NonNegative = 0.5
+
+
+SimpleGravity = Annotated[
+    UniformGravity | RotatingGravity | RadialGravity, Field(discriminator="kind")
+]
+
+
+class Zone(_Model):
+    """A box (x0, y0, x1, y1), m, with its own field."""
+
+    box: tuple[Finite, Finite, Finite, Finite]
+    field: SimpleGravity
+
+    @field_validator("box")
+    @classmethod
+    def _ordered(cls, box: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
+        if box[2] <= box[0] or box[3] <= box[1]:
+            raise ValueError("expected (x0, y0, x1, y1) with x1 > x0 and y1 > y0")
+        return box
+
+
+class ZonesGravity(_Model):
+    """A base field with regions that override it (first zone wins)."""
+
+    kind: Literal["zones"]
+    base: SimpleGravity = Field(default_factory=lambda: UniformGravity())
+    zones: list[Zone] = Field(default_factory=list)
+
+
+Gravity = Annotated[
+    UniformGravity | RotatingGravity | RadialGravity | ZonesGravity, Field(discriminator="kind")
+]
+
+# -- shapes --------------------------------------------------------------------------------------
+
+
+class _Surface(_Model):
+    friction: NonNegative = Field(default=0.8, description="Coulomb friction coefficient.")
+    elasticity: float = Field(default=0.0, ge=0.0, le=1.0, description="Restitution, 0..1.")
+
+
+class Segment(_Surface):
+    """A segment from a to b (m, in the body's frame; world frame for static geometry)."""
+
+    kind: Literal["segment"]
+    a: Vec
+    b: Vec
+    radius: NonNegative = 0.05
+
+
+class Box(_Surface):
+    """A box of size (w, h) m centred at ``center``, turned by ``angle`` rad."""
+
+    kind: Literal["box"]
+    size: tuple[Positive, Positive]
+    center: Vec = (0.0, 0.0)
+    angle: Finite = 0.0
+    radius: NonNegative = 0.0
+
+
+class Polygon(_Surface):
+    """A convex polygon (its convex hull is used), vertices in m."""
+
+    kind: Literal["polygon"]
+    points: list[Vec] = Field(min_length=3, max_length=64)
+    radius: NonNegative = 0.0
+
+
+class CircleShape(_Surface):
+    """A circle of ``radius`` m centred at ``center``."""
+
+    kind: Literal["circle"]
+    radius: Positive
+    center: Vec = (0.0, 0.0)
+
+
+class Capsule(_Surface):
+    """A capsule along the local y axis: end-cap centres ``length`` m apart, ``radius`` m."""
+
+    kind: Literal["capsule"]
+    length: NonNegative
+    radius: Positive
+    center: Vec = (0.0, 0.0)
+
+
+class Ring(_Surface):
+    """A closed ring of thin segments, inner radius ``radius`` m, about the body's origin."""
+
+    kind: Literal["ring"]
+    radius: Positive
+    segments: int = Field(default=48, ge=3, le=512)
+    thickness: Positive = 0.1
+
+
+Shape = Annotated[
+    Segment | Box | Polygon | CircleShape | Capsule | Ring, Field(discriminator="kind")
+]
+
+# -- bodies --------------------------------------------------------------------------------------
+
+
+class Prop(_Model):
+    """A dynamic body: mass (kg) spread over its shapes by area."""
+
+    name: Name
+    position: Vec
+    mass: Positive
+    shapes: list[Shape] = Field(min_length=1)
+    angle: Finite = 0.0
+    velocity: Vec = (0.0, 0.0)
+    angular_velocity: Finite = 0.0
+    moment: Positive | None = Field(default=None, description="kg·m²; default from the shapes.")
+
+
+class Waypoints(_Model):
+    kind: Literal["waypoints"]
+    points: list[Vec] = Field(min_length=2)
+    speed: Positive = 1.0
+    ease: bool = False
+    mode: Literal["loop", "pingpong", "once"] = "pingpong"
+    angle: Finite = 0.0
+
+
+class Sine(_Model):
+    kind: Literal["sine"]
+    center: Vec = (0.0, 0.0)
+    amplitude: Vec = (1.0, 0.0)
+    frequency: Positive = 0.25
+    phase: Finite = 0.0
+    angle: Finite = 0.0
+
+
+class CirclePath(_Model):
+    kind: Literal["circle"]
+    center: Vec = (0.0, 0.0)
+    radius: Positive = 1.0
+    period: Finite = 4.0
+    phase: Finite = 0.0
+    turn_with_path: bool = False
+
+    @field_validator("period")
+    @classmethod
+    def _nonzero(cls, v: float) -> float:
+        if v == 0.0:
+            raise ValueError("expected a non-zero period, s")
+        return v
+
+
+class Spin(_Model):
+    kind: Literal["spin"]
+    position: Vec = (0.0, 0.0)
+    rate: Finite = 1.0
+    angle: Finite = 0.0
+
+
+class Elevator(_Model):
+    kind: Literal["elevator"]
+    start: Vec = (0.0, 0.0)
+    axis: Vec = (0.0, 1.0)
+    acceleration: Finite = 1.0
+    start_time: Finite = 0.0
+    duration: Positive | None = Field(default=None, description="s; default: accelerate forever.")
+
+    @field_validator("axis")
+    @classmethod
+    def _nonzero(cls, v: tuple[float, float]) -> tuple[float, float]:
+        if v == (0.0, 0.0):
+            raise ValueError("expected a non-zero vector")
+        return v
+
+
+Path_ = Annotated[Waypoints | Sine | CirclePath | Spin | Elevator, Field(discriminator="kind")]
+
+
+class MoverModel(_Model):
+    """A kinematic body (platform, elevator, room) driven along a path."""
+
+    name: Name
+    shapes: list[Shape] = Field(min_length=1)
+    path: Path_
+
+
+class _Joint(_Model):
+    a: Name = Field(description="First body (or 'static').")
+    b: Name = Field(description="Second body (or 'static').")
+    max_force: Positive | None = Field(default=None, description="N; default unlimited.")
+    collide: bool = Field(default=False, description="Let the two bodies collide.")
+
+
+class Pivot(_Joint):
+    """The bodies turn about a shared world point (m)."""
+
+    kind: Literal["pivot"]
+    anchor: Vec
+
+
+class Pin(_Joint):
+    """A rigid rod between two world points (m) at setup."""
+
+    kind: Literal["pin"]
+    anchor_a: Vec
+    anchor_b: Vec
+
+
+class Spring(_Joint):
+    """A damped spring between two world points (m) at setup."""
+
+    kind: Literal["spring"]
+    anchor_a: Vec
+    anchor_b: Vec
+    stiffness: Positive = Field(description="N/m.")
+    damping: NonNegative = Field(default=0.0, description="N·s/m.")
+    rest_length: NonNegative | None = Field(
+        default=None, description="m; default: the setup distance."
+    )
+
+
+class RotarySpring(_Joint):
+    """A damped torsion spring between the bodies' angles."""
+
+    kind: Literal["rotary_spring"]
+    stiffness: Positive = Field(description="N·m/rad.")
+    damping: NonNegative = Field(default=0.0, description="N·m·s/rad.")
+    rest_angle: Finite = 0.0
+
+
+class RotaryLimit(_Joint):
+    """Keeps the relative angle b − a within [min, max] rad."""
+
+    kind: Literal["rotary_limit"]
+    min: Finite
+    max: Finite
+
+
+Joint = Annotated[Pivot | Pin | Spring | RotarySpring | RotaryLimit, Field(discriminator="kind")]
+
+
+class Patrol(_Model):
+    """Walk one way for half the ``period`` (s) at move input ``speed`` (0..1), then back."""
+
+    speed: float = Field(default=0.5, ge=0.0, le=1.0, description="Move input, 0..1.")
+    period: Positive = 4.0
+
+
+class Actor(_Model):
+    """A capsule controller (the player, an enemy): its parameters and where its intents come
+    from (scripted ``inputs`` naming it, a ``patrol``, or nothing)."""
+
+    name: Name
+    position: Vec
+    angle: Finite = 0.0
+    controller: dict[str, float | bool] = Field(
+        default_factory=dict, description="ControllerConfig fields (SI), e.g. mass = 70."
+    )
+    patrol: Patrol | None = None
+
+    @field_validator("controller")
+    @classmethod
+    def _config(cls, params: dict[str, float | bool]) -> dict[str, float | bool]:
+        _controller_config(params)
+        return params
+
+
+def _controller_config(params: dict[str, float | bool]) -> Any:
+    """Build a ``ControllerConfig`` from ``params``; ValueError naming a wrong key."""
+    from playground.controller import ControllerConfig
+
+    names = [f.name for f in dataclasses.fields(ControllerConfig)]
+    for key in params:
+        if key not in names:
+            raise ValueError(f"unknown controller parameter {key!r}{_suggest(key, names)}")
+    for key, value in params.items():
+        if isinstance(value, float) and not math.isfinite(value):
+            raise ValueError(f"{key}: expected a finite number, got {value!r}")
+    try:
+        config: Any = ControllerConfig
+        return config(**params)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(str(exc)) from None
+
+
+# -- timelines -----------------------------------------------------------------------------------
+
+
+class Input(_Model):
+    """From time ``t`` (s) on, ``actor`` holds this intent (until its next input)."""
+
+    t: NonNegative
+    actor: Name = "player"
+    move: Unit = 0.0
+    jump: bool = False
+    grab: bool = False
+    push: bool = False
+    climb: Unit = 0.0
+    gravity: Vec | None = Field(default=None, description="Own gravity direction (any length).")
+    restore_gravity: bool = False
+    nullify: Name | None = Field(default=None, description="Body whose gravity to nullify.")
+
+    @field_validator("gravity")
+    @classmethod
+    def _direction(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
+        if v is not None and v == (0.0, 0.0):
+            raise ValueError("expected a non-zero direction")
+        return v
+
+
+class _Event(_Model):
+    t: NonNegative = Field(description="When, s.")
+
+
+class SetGravity(_Event):
+    """Replace the field with uniform gravity ``g`` (m/s²)."""
+
+    kind: Literal["set_gravity"]
+    g: Vec
+
+
+class FlipGravity(_Event):
+    """Turn a uniform field by ``angle`` rad (π: a flip), instantly."""
+
+    kind: Literal["flip_gravity"]
+    angle: Finite = math.pi
+
+
+class Nullify(_Event):
+    """Zero one body's gravity."""
+
+    kind: Literal["nullify"]
+    body: Name
+
+
+class RestoreGravity(_Event):
+    """Give a body the field's gravity back."""
+
+    kind: Literal["restore_gravity"]
+    body: Name
+
+
+class BodyGravity(_Event):
+    """Give a body its own gravity: ``scale`` × the field, along ``direction`` if given."""
+
+    kind: Literal["body_gravity"]
+    body: Name
+    scale: Finite = 1.0
+    direction: Vec | None = None
+
+
+class Impulse(_Event):
+    """A one-step impulse (N·s) on a body, at a world point (m) or its centre."""
+
+    kind: Literal["impulse"]
+    body: Name
+    impulse: Vec
+    point: Vec | None = None
+
+
+class Spawn(_Event):
+    """Add a prop."""
+
+    kind: Literal["spawn"]
+    prop: Prop
+
+
+class Remove(_Event):
+    """Remove a body."""
+
+    kind: Literal["remove"]
+    body: Name
+
+
+Event = Annotated[
+    SetGravity | FlipGravity | Nullify | RestoreGravity | BodyGravity | Impulse | Spawn | Remove,
+    Field(discriminator="kind"),
+]
+
+# -- expectations --------------------------------------------------------------------------------
+
+VECTOR_QUANTITIES = (
+    "position",
+    "velocity",
+    "engine",
+    "contact",
+    "contact_normal",
+    "contact_friction",
+    "constraint",
+    "support",
+    "perceived_gravity",
+)
+"""Quantities that are (x, y) vectors; pick a ``component`` or compare the vector."""
+SCALAR_QUANTITIES = ("angle", "angular_velocity", "tilt")
+"""Quantities that are numbers: angle (rad), angular velocity (rad/s), tilt (rad, 0..π)."""
+FORCE_QUANTITIES = (
+    "engine",
+    "contact",
+    "contact_normal",
+    "contact_friction",
+    "constraint",
+    "support",
+)
+"""Force readings, N; ``filtered = true`` gives the 1€-filtered reading."""
+
+Quantity = Literal[
+    "position",
+    "velocity",
+    "angle",
+    "angular_velocity",
+    "tilt",
+    "state",
+    "engine",
+    "contact",
+    "contact_normal",
+    "contact_friction",
+    "constraint",
+    "support",
+    "perceived_gravity",
+]
+
+
+class Expectation(_Model):
+    """A check on one body's quantity.
+
+    ``check``: ``at`` time ``t``; ``always`` / ``eventually`` / ``mean`` over ``window`` (default
+    the whole run). Compare with ``equals`` (± ``tolerance`` + ``relative``·|equals|), or bound
+    with ``above`` / ``below``; a state compares with ``equals`` or ``one_of``.
+    """
+
+    name: str | None = Field(
+        default=None, min_length=1, description="Default: made from the check."
+    )
+    body: Name
+    quantity: Quantity
+    component: Literal["x", "y", "norm"] | None = Field(
+        default=None, description="For vectors: x, y or the length; none compares the vector."
+    )
+    filtered: bool = Field(default=False, description="1€-filtered force reading.")
+    check: Literal["at", "always", "eventually", "mean"] = "at"
+    t: NonNegative | None = Field(default=None, description="For check = 'at', s.")
+    window: tuple[NonNegative, NonNegative] | None = Field(
+        default=None, description="(start, end), s."
+    )
+    equals: Finite | Vec | str | None = None
+    one_of: list[str] | None = None
+    tolerance: NonNegative = Field(
+        default=0.0, description="Absolute tolerance, in the quantity's unit."
+    )
+    relative: NonNegative = Field(default=0.0, description="Tolerance relative to |equals|.")
+    above: Finite | None = None
+    below: Finite | None = None
+
+    @field_validator("window")
+    @classmethod
+    def _window(cls, w: tuple[float, float] | None) -> tuple[float, float] | None:
+        if w is not None and w[1] < w[0]:
+            raise ValueError("expected (start, end) with end >= start")
+        return w
+
+
+# -- the level -----------------------------------------------------------------------------------
+
+
+class Level(_Model):
+    """One level file."""
+
+    model_config = ConfigDict(
+        extra="forbid",
+        frozen=True,
+        json_schema_extra={"$schema": "https://json-schema.org/draft/2020-12/schema"},
+    )
+
+    title: str = Field(min_length=1, max_length=80)
+    description: str = Field(min_length=1, description="One paragraph: what the level shows.")
+    settings: Settings = Field(default_factory=lambda: Settings())
+    gravity: Gravity = Field(default_factory=lambda: UniformGravity())
+    view: View = Field(default_factory=lambda: View())
+    geometry: list[Shape] = Field(default_factory=list, description="Static shapes, world frame.")
+    props: list[Prop] = Field(default_factory=list)
+    movers: list[MoverModel] = Field(default_factory=list)
+    joints: list[Joint] = Field(default_factory=list)
+    actors: list[Actor] = Field(default_factory=list)
+    tracking: Tracking = Field(default_factory=lambda: Tracking())
+    events: list[Event] = Field(default_factory=list)
+    inputs: list[Input] = Field(default_factory=list)
+    expect: list[Expectation] = Field(default_factory=list)
+
+    def body_names(self) -> list[str]:
+        """Every named body: props, movers, actors and spawned props."""
+        spawned = [e.prop.name for e in self.events if isinstance(e, Spawn)]
+        return [
+            *(p.name for p in self.props),
+            *(m.name for m in self.movers),
+            *(a.name for a in self.actors),
+            *spawned,
+        ]
+
+    def tracked(self) -> list[str]:
+        """Bodies whose forces are read: actors and ``tracking.bodies``."""
+        return [*(a.name for a in self.actors), *self.tracking.bodies]
+
+
+# -- errors --------------------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True, slots=True)
+class Problem:
+    """One thing wrong with a level: where (dotted key path) and what."""
+
+    path: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.path}: {self.message}" if self.path else self.message
+
+
+class LevelError(Exception):
+    """A level could not be loaded: every problem, each with its key path.
+
+    ``line`` and ``column`` are set for TOML syntax errors.
+    """
+
+    def __init__(
+        self,
+        source: str,
+        problems: Sequence[Problem],
+        *,
+        line: int | None = None,
+        column: int | None = None,
+    ) -> None:
+        self.source = source
+        self.problems = tuple(problems)
+        self.line = line
+        self.column = column
+        super().__init__("\n".join(f"{source}: {p}" for p in self.problems))
+
+
+def _suggest(word: str, options: Sequence[str]) -> str:
+    close = difflib.get_close_matches(word, list(options), n=1, cutoff=0.5)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def _unwrap(tp: Any) -> list[Any]:
+    """The alternatives inside Annotated / Optional / Union."""
+    origin = typing.get_origin(tp)
+    if origin is Annotated:
+        return _unwrap(typing.get_args(tp)[0])
+    if origin is Union or origin is types.UnionType:
+        return [alt for arg in typing.get_args(tp) for alt in _unwrap(arg)]
+    return [tp]
+
+
+def _walk(loc: Sequence[int | str]) -> tuple[set[int | str], type[BaseModel] | None]:
+    """Follow a pydantic error location through the models.
+
+    Returns the discriminator tags pydantic put in the location (a key path has no such level)
+    and the model whose table sits at the end of it, if any.
+    """
+    tags: set[int | str] = set()
+    current: list[Any] = [Level]
+    for key in loc:
+        nxt: list[Any] = []
+        for tp in current:
+            alts = _unwrap(tp)
+            models = [a for a in alts if isinstance(a, type) and issubclass(a, BaseModel)]
+            tagged = [
+                m
+                for m in models
+                if "kind" in m.model_fields
+                and typing.get_args(m.model_fields["kind"].annotation) == (key,)
+            ]
+            if len(models) > 1 and tagged:
+                tags.add(key)
+                nxt.extend(tagged)
+                continue
+            for alt in alts:
+                origin = typing.get_origin(alt)
+                if isinstance(alt, type) and issubclass(alt, BaseModel):
+                    if isinstance(key, str) and key in alt.model_fields:
+                        nxt.append(alt.model_fields[key].annotation)
+                elif origin in (list, tuple) and isinstance(key, int):
+                    nxt.extend(a for a in typing.get_args(alt) if a is not Ellipsis)
+                elif origin is dict and isinstance(key, str):
+                    nxt.append(typing.get_args(alt)[1])
+        current = nxt
+    for tp in current:
+        for alt in _unwrap(tp):
+            if isinstance(alt, type) and issubclass(alt, BaseModel):
+                return tags, alt
+    return tags, None
+
+
+def _path(loc: Sequence[int | str], tags: set[int | str]) -> str:
+    return ".".join(str(k) for k in loc if k not in tags)
+
+
+_TYPE_WORDS = {
+    "float_type": "a number",
+    "float_parsing": "a number",
+    "int_type": "an integer",
+    "int_parsing": "an integer",
+    "int_from_float": "an integer",
+    "bool_type": "true or false",
+    "bool_parsing": "true or false",
+    "string_type": "a string",
+    "list_type": "an array",
+    "tuple_type": "an array",
+    "dict_type": "a table",
+    "model_type": "a table",
+    "model_attributes_type": "a table",
+    "finite_number": "a finite number",
+}
+
+
+def _problems(exc: ValidationError) -> list[Problem]:
+    out: list[Problem] = []
+    for err in exc.errors(include_url=False):
+        loc = tuple(err["loc"])
+        tags, model = _walk(loc[:-1])
+        kind = err["type"]
+        if kind == "extra_forbidden":
+            key = str(loc[-1])
+            options = list(model.model_fields) if model is not None else []
+            message = f"unknown key{_suggest(key, options)}"
+        elif kind == "missing":
+            message = "required key is missing"
+        elif kind in _TYPE_WORDS:
+            message = f"expected {_TYPE_WORDS[kind]}, got {_show(err.get('input'))}"
+        elif kind == "union_tag_invalid":
+            ctx = err.get("ctx", {})
+            expected = str(ctx.get("expected_tags", ""))
+            tag = str(ctx.get("tag", ""))
+            names = [t.strip(" '") for t in expected.split(",")]
+            message = f"kind {tag!r} is not one of {expected}{_suggest(tag, names)}"
+        elif kind == "union_tag_not_found":
+            message = "a table with a 'kind' key is required"
+        else:
+            msg = str(err["msg"])
+            msg = msg.removeprefix("Value error, ").replace("Input should be", "expected")
+            message = f"{msg[0].lower()}{msg[1:]}, got {_show(err.get('input'))}"
+        out.append(Problem(_path(loc, tags), message))
+    return out
+
+
+def _show(value: object) -> str:
+    text = json.dumps(value, default=repr) if not isinstance(value, str) else repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+# -- cross-references ----------------------------------------------------------------------------
+
+
+def _references(level: Level) -> Iterator[Problem]:
+    """Names that must exist, be unique, or be of the right kind."""
+    names = level.body_names()
+    seen: set[str] = set()
+    for name in names:
+        if name == STATIC:
+            yield Problem("", f"{STATIC!r} is reserved for the fixed world; rename the body")
+        if name in seen:
+            yield Problem("", f"body name {name!r} is used twice; names must be unique")
+        seen.add(name)
+    actors = [a.name for a in level.actors]
+    tracked = level.tracked()
+    dynamic = [*(p.name for p in level.props), *actors]
+    dynamic += [e.prop.name for e in level.events if isinstance(e, Spawn)]
+
+    def known(path: str, name: str, pool: Sequence[str], what: str) -> Iterator[Problem]:
+        if name not in pool:
+            listing = ", ".join(pool) or "none"
+            yield Problem(
+                path, f"no {what} named {name!r}{_suggest(name, pool)} (known: {listing})"
+            )
+
+    for i, prop in enumerate(level.props):
+        for j, shape in enumerate(prop.shapes):
+            if isinstance(shape, Ring):
+                yield Problem(f"props.{i}.shapes.{j}", "a ring belongs to a mover or geometry")
+    for i, name in enumerate(level.tracking.bodies):
+        yield from known(f"tracking.bodies.{i}", name, dynamic, "dynamic body")
+    for i, joint in enumerate(level.joints):
+        for end in ("a", "b"):
+            yield from known(f"joints.{i}.{end}", getattr(joint, end), [*names, STATIC], "body")
+        if joint.a == joint.b:
+            yield Problem(f"joints.{i}", "a joint needs two different bodies")
+    for i, inp in enumerate(level.inputs):
+        yield from known(f"inputs.{i}.actor", inp.actor, actors, "actor")
+        if inp.nullify is not None:
+            yield from known(f"inputs.{i}.nullify", inp.nullify, dynamic, "dynamic body")
+    for i, actor in enumerate(level.actors):
+        if actor.patrol is not None and any(inp.actor == actor.name for inp in level.inputs):
+            yield Problem(
+                f"actors.{i}.patrol", "an actor has a patrol or scripted inputs, not both"
+            )
+    for i, event in enumerate(level.events):
+        body = getattr(event, "body", None)
+        if body is not None:
+            pool = names if isinstance(event, Remove) else dynamic
+            yield from known(f"events.{i}.body", body, pool, "body")
+        if isinstance(event, FlipGravity) and not isinstance(level.gravity, UniformGravity):
+            yield Problem(f"events.{i}", "flip_gravity turns a uniform field; use rotating turns")
+    follow = level.view.follow
+    if follow is not None and follow not in names and not (follow == "player" and not names):
+        yield from known("view.follow", follow, names, "body")
+    for i, exp in enumerate(level.expect):
+        yield from _check_expectation(f"expect.{i}", exp, level, names, actors, tracked)
+
+
+def _check_expectation(
+    path: str,
+    exp: Expectation,
+    level: Level,
+    names: Sequence[str],
+    actors: Sequence[str],
+    tracked: Sequence[str],
+) -> Iterator[Problem]:
+    if exp.body not in names:
+        yield Problem(
+            f"{path}.body", f"no body named {exp.body!r}{_suggest(exp.body, list(names))}"
+        )
+        return
+    q = exp.quantity
+    seconds = level.settings.seconds
+    if exp.check == "at":
+        if exp.t is None:
+            yield Problem(f"{path}.t", "check = 'at' needs a time t, s")
+        elif exp.t > seconds:
+            yield Problem(f"{path}.t", f"t = {exp.t} s is after the run's end ({seconds} s)")
+        if exp.window is not None:
+            yield Problem(f"{path}.window", "check = 'at' takes t, not a window")
+    else:
+        if exp.t is not None:
+            yield Problem(f"{path}.t", f"check = {exp.check!r} takes a window, not t")
+        if exp.window is not None and exp.window[1] > seconds:
+            yield Problem(f"{path}.window", f"ends after the run's end ({seconds} s)")
+    if q == "state":
+        if exp.body not in actors:
+            yield Problem(f"{path}.quantity", f"{exp.body!r} is not an actor: it has no state")
+        if not isinstance(exp.equals, str) and exp.one_of is None:
+            yield Problem(path, "a state check needs equals = 'state' or one_of = [...]")
+        if exp.check == "mean":
+            yield Problem(f"{path}.check", "a state has no mean")
+        if exp.above is not None or exp.below is not None or exp.component is not None:
+            yield Problem(path, "a state compares with equals or one_of only")
+        return
+    if isinstance(exp.equals, str) or exp.one_of is not None:
+        yield Problem(f"{path}.equals", f"{q} is a number or vector, not a state name")
+    if exp.equals is None and exp.above is None and exp.below is None:
+        yield Problem(path, "nothing to compare: give equals, above or below")
+    if exp.equals is not None and (exp.above is not None or exp.below is not None):
+        yield Problem(path, "give equals (± tolerance) or above/below bounds, not both")
+    vector = q in VECTOR_QUANTITIES and exp.component is None
+    if q in SCALAR_QUANTITIES and exp.component is not None:
+        yield Problem(f"{path}.component", f"{q} is a number; it has no component")
+    if vector and (exp.above is not None or exp.below is not None):
+        yield Problem(f"{path}.component", "bounds need a component: x, y or norm")
+    if vector and isinstance(exp.equals, float | int):
+        yield Problem(f"{path}.equals", f"{q} is a vector: give [x, y] or a component")
+    if not vector and isinstance(exp.equals, tuple):
+        yield Problem(f"{path}.equals", "expected a number for a component or scalar")
+    if q in (*FORCE_QUANTITIES, "perceived_gravity") and exp.body not in tracked:
+        yield Problem(f"{path}.body", f"{exp.body!r} is not tracked; add it to tracking.bodies")
+    if (
+        q in ("contact", "contact_normal", "contact_friction", "constraint")
+        and not level.settings.contact_split
+    ):
+        yield Problem(f"{path}.quantity", f"{q} needs settings.contact_split = true")
+    perceived = q == "perceived_gravity" or (q == "support" and exp.filtered)
+    if perceived and exp.body not in actors and not level.tracking.perceive:
+        yield Problem(f"{path}.quantity", "needs tracking.perceive = true")
+    if exp.filtered and q not in FORCE_QUANTITIES:
+        yield Problem(f"{path}.filtered", f"only force readings are filtered, not {q}")
+    if q == "tilt" and exp.body not in tracked:
+        yield Problem(f"{path}.body", f"tilt needs an up: {exp.body!r} must be an actor or tracked")
+
+
+# -- loading -------------------------------------------------------------------------------------
+
+_TOML_WHERE = re.compile(r"\(at line (\d+), column (\d+)\)")
+
+
+def loads(text: str, source: str = "<string>") -> Level:
+    """Parse and validate a level from TOML text; :class:`LevelError` lists every problem."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        where = _TOML_WHERE.search(str(exc))
+        line, column = (int(where[1]), int(where[2])) if where else (None, None)
+        raise LevelError(
+            source, [Problem("", f"TOML syntax error: {exc}")], line=line, column=column
+        ) from None
+    return validate(data, source)
+
+
+def validate(data: object, source: str = "<data>") -> Level:
+    """Validate an already parsed document (a dict of TOML values)."""
+    try:
+        level = Level.model_validate(data)
+    except ValidationError as exc:
+        raise LevelError(source, _problems(exc)) from None
+    except RecursionError:
+        raise LevelError(source, [Problem("", "document nested too deeply")]) from None
+    problems = list(_references(level))
+    if problems:
+        raise LevelError(source, problems)
+    return level
+
+
+def load(path: str | os.PathLike[str]) -> Level:
+    """Load a level file.
+
+    >>> load(find("rest")).title
+    'Rest'
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise LevelError(str(p), [Problem("", f"cannot read the file: {exc}")]) from None
+    return loads(text, str(p))
+
+
+# -- shipped levels ------------------------------------------------------------------------------
+
+LEVELS_ENV = "PLAYGROUND_LEVELS"
+"""Environment variable: extra directories of level files (os.pathsep separated)."""
+
+
+def levels_dirs() -> list[Path]:
+    """Where shipped levels are looked for, in order.
+
+    1. directories in ``$PLAYGROUND_LEVELS``;
+    2. ``levels/`` beside the package (a source checkout or an editable install);
+    3. ``<prefix>/share/playground/levels`` (a wheel installs the files there as data files).
+    """
+    dirs = [Path(d) for d in os.environ.get(LEVELS_ENV, "").split(os.pathsep) if d]
+    dirs.append(Path(__file__).resolve().parent.parent / "levels")
+    dirs.append(Path(sys.prefix) / "share" / "playground" / "levels")
+    return [d for d in dirs if d.is_dir()]
+
+
+def shipped() -> dict[str, Path]:
+    """Shipped levels by name (file stem), from the first directory that has each."""
+    found: dict[str, Path] = {}
+    for d in levels_dirs():
+        for f in sorted(d.glob("*.toml")):
+            found.setdefault(f.stem, f)
+    return found
+
+
+def find(level: str | os.PathLike[str]) -> Path:
+    """A level file from a path or the name of a shipped level.
+
+    >>> find("rest").name
+    'rest.toml'
+    """
+    p = Path(level)
+    if p.suffix == ".toml" or p.exists():
+        if not p.is_file():
+            raise LevelError(str(p), [Problem("", "no such level file")])
+        return p
+    levels = shipped()
+    if str(level) in levels:
+        return levels[str(level)]
+    names = sorted(levels)
+    raise LevelError(
+        str(level),
+        [
+            Problem(
+                "",
+                f"not a file or a shipped level{_suggest(str(level), names)} "
+                f"(shipped: {', '.join(names) or 'none'})",
+            )
+        ],
+    )
+
+
+def schema() -> dict[str, Any]:
+    """The JSON Schema of a level file (what ``levels/level.schema.json`` holds)."""
+    out = Level.model_json_schema()
+    out["title"] = "playground level"
+    return out
