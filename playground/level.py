@@ -108,7 +108,9 @@ class View(_Model):
 
     camera: Vec = Field(default=(0.0, 0.0), description="Camera centre at start, m.")
     pixels_per_metre: Positive = Field(default=50.0, le=10000.0, description="Zoom, px/m.")
-    follow: Name | None = Field(default="player", description="Body the camera follows, if any.")
+    follow: Name | None = Field(
+        default=None, description="Body the camera follows; default: the first actor, if any."
+    )
     roll: bool = Field(default=False, description="Roll the camera with the followed body's up.")
 
 
@@ -847,7 +849,7 @@ def _references(level: Level) -> Iterator[Problem]:
         if isinstance(event, FlipGravity) and not isinstance(level.gravity, UniformGravity):
             yield Problem(f"events.{i}", "flip_gravity turns a uniform field; use rotating turns")
     follow = level.view.follow
-    if follow is not None and follow not in names and not (follow == "player" and not names):
+    if follow is not None and follow not in names:
         yield from known("view.follow", follow, names, "body")
     for i, exp in enumerate(level.expect):
         yield from _check_expectation(f"expect.{i}", exp, level, names, actors, tracked)
