@@ -90,6 +90,11 @@ def cmd_run(args: argparse.Namespace) -> int:
     if not (math.isfinite(seconds) and seconds >= 0):
         print(f"playground run: --seconds: expected a number >= 0, got {seconds}", file=sys.stderr)
         return 2
+    if args.replay is not None:
+        covered = _replay(args.replay, path.stem, scene)
+        if covered is None:
+            return 2
+        seconds = covered if args.seconds is None else seconds
     checks = watch(scene)
     start = time.perf_counter()
     if args.record is not None:
@@ -141,6 +146,36 @@ def cmd_run(args: argparse.Namespace) -> int:
     return 0 if all(r.passed for r in results) else 1
 
 
+def _replay(file: str, name: str, scene: Any) -> float | None:
+    """Let a replay drive the scene's player; the seconds it covers (None after an error)."""
+    try:
+        from playground.view.launcher import attach_replay, show_scene
+        from playground.view.replay import Replay, ReplayError
+    except ImportError as exc:
+        print(f"playground run: --replay needs pygame-ce ({exc})", file=sys.stderr)
+        return None
+    try:
+        replay = Replay.load(file)
+        attach_replay(show_scene(name, scene), replay)
+    except (ReplayError, ValueError) as exc:
+        print(f"playground run: {exc}", file=sys.stderr)
+        return None
+    return replay.steps * replay.dt
+
+
+def cmd_play(args: argparse.Namespace) -> int:
+    """Open a level in the desktop view (see :mod:`playground.view.launcher`)."""
+    try:
+        from playground.view.launcher import run_play
+    except ImportError as exc:
+        print(
+            f"playground play: needs pygame-ce: pip install 'playground[view]' ({exc})",
+            file=sys.stderr,
+        )
+        return 2
+    return run_play(args)
+
+
 def cmd_schema(args: argparse.Namespace) -> int:
     """Print the level JSON Schema, or write it to --output."""
     text = schema_text()
@@ -176,7 +211,16 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--seconds", type=float, help="simulated seconds (default: the level's)")
     p.add_argument("--json", action="store_true", help="print one JSON object (see docs)")
     p.add_argument("--record", metavar="FILE", help="record every step to FILE (.csv or .npz)")
+    p.add_argument("--replay", metavar="FILE", help="drive the player with a `play` replay")
     p.set_defaults(func=cmd_run)
+
+    p = sub.add_parser("play", help="open a level in the desktop view (pygame-ce)")
+    p.add_argument("level", nargs="?", default="sandbox", metavar="LEVEL", help="default sandbox")
+    p.add_argument("--headless", action="store_true", help="draw off screen (no display needed)")
+    p.add_argument("--frames", type=int, metavar="N", help="run N frames of 1/60 s, then exit")
+    p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
+    p.add_argument("--replay-out", metavar="FILE", help="write the session's inputs as a replay")
+    p.set_defaults(func=cmd_play)
 
     p = sub.add_parser("schema", help="print the level JSON Schema")
     p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")

@@ -73,6 +73,7 @@ class Show:
         camera: the camera centre at start, m.
         pixels_per_metre: the zoom at start, px/m.
         roll: start with the camera rolling with the followed body's perceived up.
+        scene: the :class:`playground.scene.Scene` it was built from, if any.
     """
 
     name: str
@@ -85,6 +86,7 @@ class Show:
     camera: Vec = (0.0, 0.0)
     pixels_per_metre: float = 40.0
     roll: bool = False
+    scene: Any = None
 
 
 class Accumulator:
@@ -484,7 +486,7 @@ class App:
                 if name is None:
                     continue
                 ctrl = show.controllers.get(name)
-                arrows = body_arrows(world, name, _controller_forces(ctrl))
+                arrows = body_arrows(world, name, *_controller_forces(ctrl))
                 c = body.local_to_world(body.center_of_gravity)
                 draw_arrows(
                     surf, self.camera, arrows, body.mass, ((c.x, c.y), world.perceived_up(name))
@@ -552,14 +554,23 @@ class App:
         return [*self.finished, *([now] if now is not None and now.steps else [])]
 
 
-def _controller_forces(ctrl: Any) -> dict[str, Vec]:
-    """The controller's last hover, drive, grip and push forces (N), if it reports them."""
+def _controller_forces(ctrl: Any) -> tuple[dict[str, Vec], dict[str, Vec]]:
+    """The controller's last hover, drive, grip and push forces (N) if it reports them, and where
+    they act (m): hover and drive at the probe's ground point, grip at the hand's anchor."""
     forces = getattr(ctrl, "last_forces", None)
     out: dict[str, Vec] = {}
+    at: dict[str, Vec] = {}
     if forces is None:
-        return out
+        return out, at
     for kind in ("hover", "drive", "grip", "push"):
         v = getattr(forces, kind, None)
         if v is not None:
             out[kind] = (float(v[0]), float(v[1]))
-    return out
+    probe = getattr(ctrl, "probe", None)
+    if probe is not None:
+        at["hover"] = at["drive"] = (float(probe.point[0]), float(probe.point[1]))
+    joint = getattr(ctrl, "joint", None)
+    if joint is not None:
+        a = joint.a.local_to_world(joint.anchor_a)
+        at["grip"] = (a.x, a.y)
+    return out, at

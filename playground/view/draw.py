@@ -138,7 +138,8 @@ def _draw_shape(
 ) -> None:
     body = shape.body
     assert body is not None  # shapes in a space always have a body
-    fill = _shade(colour, 0.55 if sleeping else 0.8)
+    # Dim fills keep the force arrows drawn on top readable.
+    fill = _shade(colour, 0.3 if sleeping else 0.45)
     edge = colour
     if isinstance(shape, pymunk.Circle):
         c = body.local_to_world(shape.offset)
@@ -229,10 +230,14 @@ def draw_world(
 
 
 def body_arrows(
-    world: World, name: str, controller_forces: Mapping[str, Vec] | None = None
+    world: World,
+    name: str,
+    controller_forces: Mapping[str, Vec] | None = None,
+    origins: Mapping[str, Vec] | None = None,
 ) -> list[Arrow]:
     """The force arrows of one tracked body: support raw and filtered, gravity, and the
-    controller's own forces (``controller_forces``: kind → N, e.g. hover, drive, grip, push)."""
+    controller's own forces (``controller_forces``: kind → N, e.g. hover, drive, grip, push),
+    drawn from where they act when known (``origins``: kind → m; default the centre of mass)."""
     body = world.body(name)
     c = body.local_to_world(body.center_of_gravity)
     origin = (c.x, c.y)
@@ -246,7 +251,7 @@ def body_arrows(
     out.append(Arrow(origin, (-m * pg[0], -m * pg[1]), "support_filtered", thick=True))
     for kind, f in (controller_forces or {}).items():
         if kind in COLOURS:
-            out.append(Arrow(origin, f, kind))
+            out.append(Arrow((origins or {}).get(kind, origin), f, kind))
     return out
 
 

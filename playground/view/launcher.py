@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -20,12 +19,10 @@ from playground.view.replay import Replay, ReplayError
 
 __all__ = [
     "DEFAULT_LEVEL",
-    "add_play_arguments",
     "attach_replay",
     "init_headless",
     "level_names",
     "play",
-    "play_args",
     "replay_level",
     "run_play",
     "show_level",
@@ -68,6 +65,7 @@ def show_scene(name: str, scene: Any) -> Show:
         camera=tuple(level.view.camera),
         pixels_per_metre=float(level.view.pixels_per_metre),
         roll=bool(level.view.roll),
+        scene=scene,
     )
 
 
@@ -164,27 +162,9 @@ def play(
     return 0
 
 
-def play_args(argv: Sequence[str] | None = None) -> int:
-    """A stand-alone entry for ``python -m playground.view.launcher`` (same options as
-    ``playground play``)."""
-    import argparse
-
-    parser = argparse.ArgumentParser(prog="playground play")
-    add_play_arguments(parser)
-    return run_play(parser.parse_args(argv))
-
-
-def add_play_arguments(parser: Any) -> None:
-    """The options of ``playground play`` (for the CLI's subparser)."""
-    parser.add_argument("level", nargs="?", default=DEFAULT_LEVEL, help="level name or path")
-    parser.add_argument("--headless", action="store_true", help="render off screen")
-    parser.add_argument("--frames", type=int, default=None, help="frames to run, then exit")
-    parser.add_argument("--screenshot", default=None, help="save the last frame as PNG")
-    parser.add_argument("--replay-out", default=None, help="write the session's inputs here")
-
-
 def run_play(args: Any) -> int:
-    """Run ``playground play`` from parsed arguments."""
+    """Run ``playground play`` from the CLI's parsed arguments (level, headless, frames,
+    screenshot, replay_out)."""
     if args.frames is not None and args.frames < 0:
         print(f"playground play: --frames: expected >= 0, got {args.frames}", file=sys.stderr)
         return 2
@@ -195,7 +175,3 @@ def run_play(args: Any) -> int:
         screenshot=args.screenshot,
         replay_out=args.replay_out,
     )
-
-
-if __name__ == "__main__":
-    sys.exit(play_args())

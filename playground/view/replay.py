@@ -87,16 +87,18 @@ class Replay:
         return self.changes[i][1] if i >= 0 else Intent()
 
     def to_json(self) -> str:
-        doc = {
+        head = {
             "format": FORMAT,
             "version": VERSION,
             "level": self.level,
             "dt": self.dt,
             "steps": self.steps,
             "actor": self.actor,
-            "changes": [[s, intent_to_dict(i)] for s, i in self.changes],
         }
-        return json.dumps(doc, indent=1)
+        # One line per change keeps long sessions diffable and readable.
+        lines = [f" {json.dumps(k)}: {json.dumps(v)}," for k, v in head.items()]
+        rows = ",\n".join(f"  {json.dumps([s, intent_to_dict(i)])}" for s, i in self.changes)
+        return "{\n" + "\n".join(lines) + '\n "changes": [\n' + rows + "\n ]\n}"
 
     @classmethod
     def from_json(cls, text: str, where: str = "replay") -> Replay:

@@ -1,0 +1,148 @@
+"""The view on the shipped levels: every level draws off screen with its forces where the player
+is, a replay of keyboard play reproduces the run exactly, and drawing leaves the level's recording
+unchanged."""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pygame
+import pytest
+
+from playground.view import App, Show
+from playground.view.draw import COLOURS
+from playground.view.launcher import (
+    attach_replay,
+    init_headless,
+    level_names,
+    replay_level,
+    show_level,
+)
+
+SIZE = (800, 450)
+FRAMES = 45  # frames of 1/60 s: long enough for the filtered force to build up at the player
+COLOUR_TOL = 12  # per channel: draws are not anti-aliased; panels blend at most this much
+NEAR_PX = 90  # px: "near the player"
+MIN_PIXELS = 15  # filtered-force pixels that make a visible thick arrow (5 px wide, > 3 px long)
+LEVELS = level_names()
+
+
+@pytest.fixture(scope="module", autouse=True)
+def headless() -> Iterator[None]:
+    init_headless()
+    yield
+
+
+def colour_near(surf: pygame.Surface, colour: tuple[int, int, int], at: tuple[float, float]) -> int:
+    arr = pygame.surfarray.array3d(surf).astype(int)
+    x0, y0 = int(at[0]), int(at[1])
+    w, h = surf.get_size()
+    box = arr[
+        max(x0 - NEAR_PX, 0) : min(x0 + NEAR_PX, w), max(y0 - NEAR_PX, 0) : min(y0 + NEAR_PX, h)
+    ]
+    return int((np.abs(box - np.array(colour)).max(axis=2) <= COLOUR_TOL).sum())
+
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_every_level_draws(level: str) -> None:
+    """Each shipped level renders off screen without error; its HUD panels lie inside the window;
+    the filtered support force's colour shows near the player when the player is supported."""
+    app = App(show_level, level, levels=LEVELS, size=SIZE)
+    app.run_frames(FRAMES)
+    surf = app.render()
+    window = surf.get_rect()
+    assert app.hud.rects and all(window.contains(r) for r in app.hud.rects)
+    show = app.session.show
+    if show.player is None:
+        return
+    body = app.world.body(show.player)
+    at = app.camera.to_screen((body.position.x, body.position.y))
+    assert window.collidepoint(at), f"{level}: the player is off screen at {at}"
+    m = body.mass
+    gx, gy = app.world.perceived_gravity(show.player)
+    if m * float(np.hypot(gx, gy)) >= 0.2 * m * 9.81:
+        assert colour_near(surf, COLOURS["support_filtered"], at) >= MIN_PIXELS
+
+
+def _player_level() -> str:
+    if "sandbox" in LEVELS:
+        return "sandbox"
+    for name in LEVELS:
+        if show_level(name).player is not None:
+            return name
+    pytest.skip("no shipped level has a player")
+
+
+KEYS = (
+    (3, pygame.KEYDOWN, pygame.K_d),
+    (30, pygame.KEYDOWN, pygame.K_SPACE),
+    (33, pygame.KEYUP, pygame.K_SPACE),
+    (50, pygame.KEYUP, pygame.K_d),
+    (52, pygame.KEYDOWN, pygame.K_a),
+    (60, pygame.KEYDOWN, pygame.K_g),  # flip own gravity
+    (62, pygame.KEYUP, pygame.K_g),
+    (80, pygame.KEYDOWN, pygame.K_RIGHTBRACKET),  # fast forward: more steps per frame
+    (95, pygame.KEYUP, pygame.K_a),
+    (100, pygame.KEYDOWN, pygame.K_g),  # restore it
+)
+
+
+def state(show: Show) -> list[float]:
+    w = show.world
+    out: list[float] = [w.time, float(w.steps)]
+    for n in w.names:
+        b = w.body(n)
+        out += [*b.position, *b.velocity, b.angle, b.angular_velocity]
+    return out
+
+
+def test_replay_of_keyboard_play_is_exact(tmp_path: Path) -> None:
+    """Law: keyboard play recorded to a replay file and played back headless without a view ends
+    in exactly the same state (same process: exact equality)."""
+    level = _player_level()
+    app = App(show_level, level, levels=LEVELS, size=SIZE)
+    for frame in range(120):
+        for at, kind, key in KEYS:
+            if at == frame:
+                app.handle(pygame.event.Event(kind, key=key))
+        app.frame(1.0 / 60.0)
+        app.render()
+    replay = app.replays()[-1]
+    assert len(replay.changes) >= 5
+    path = tmp_path / "play.json"
+    replay.save(path)
+    from playground.view import Replay
+
+    back = replay_level(level, Replay.load(path))
+    assert state(back) == state(app.session.show)
+
+
+def test_drawing_leaves_the_recording_unchanged(tmp_path: Path) -> None:
+    """Law: a level stepped by the view (drawing every frame) and stepped alone give identical
+    recordings (the levels' own CSV recorder, floats written with repr)."""
+    from playground.recording import recording
+
+    level = _player_level()
+    frames = 60
+    with contextlib.ExitStack() as stack:
+
+        def load(name: str) -> Show:
+            show = show_level(name)
+            stack.enter_context(recording(show.scene, tmp_path / "view.csv"))
+            return show
+
+        app = App(load, level, size=SIZE)
+        app.run_frames(frames)
+        steps = app.world.steps
+    # The same inputs without a view: the view's own replay (the keyboard replaced the script).
+    plain = show_level(level)
+    attach_replay(plain, app.replays()[-1])
+    with recording(plain.scene, tmp_path / "plain.csv"):
+        for _ in range(steps):
+            plain.world.step()
+    view_csv = (tmp_path / "view.csv").read_text()
+    assert view_csv.count("\n") > steps
+    assert view_csv == (tmp_path / "plain.csv").read_text()
