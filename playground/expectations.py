@@ -87,6 +87,10 @@ def name_of(exp: Expectation) -> str:
     what = f"{exp.body}.{exp.quantity}"
     if exp.filtered:
         what += "_filtered"
+    if exp.relative_to is not None:
+        what += f"-{exp.relative_to}.{exp.quantity}"
+    if exp.change:
+        what = f"change of {what}"
     if exp.component is not None:
         what += f".{exp.component}"
     if exp.check == "at":
@@ -104,6 +108,15 @@ def _fmt(value: Value, unit: str) -> str:
     return f"{value:.6g} {unit}".rstrip()
 
 
+def _minus(a: Value, b: Value) -> Value:
+    """``a − b`` for numbers and vectors."""
+    if isinstance(a, tuple) and isinstance(b, tuple):
+        return (a[0] - b[0], a[1] - b[1])
+    if isinstance(a, float) and isinstance(b, float):
+        return a - b
+    raise ValueError(f"cannot subtract {b!r} from {a!r}")
+
+
 class Check:
     """One expectation, fed a sample every step by :meth:`observe`."""
 
@@ -118,6 +131,7 @@ class Check:
             p = scene.level.tracking.perception
             one_euro = OneEuroFilter(p.min_cutoff, p.beta, p.d_cutoff)
             self._filter = FilterChain(Median3(), one_euro) if p.spike_filter else one_euro
+        self._origin: Value | None = None
         self._taken: tuple[float, Value] | None = None
         self._first_bad: tuple[float, Value] | None = None
         self._first_good: tuple[float, Value] | None = None
@@ -128,7 +142,8 @@ class Check:
 
     # -- sampling --------------------------------------------------------------------------------
 
-    def _value(self, scene: Scene) -> Value | None:
+    def _raw(self, scene: Scene) -> Value | None:
+        """The quantity now (filtered, relative to another body if asked), or None if absent."""
         exp = self.exp
         if exp.body not in scene.world.names:
             return None
@@ -136,14 +151,24 @@ class Check:
             raw: Value = scene.support_filtered(exp.body)
         else:
             raw = read(scene, exp.body, exp.quantity)
+        if exp.relative_to is not None:
+            if exp.relative_to not in scene.world.names:
+                return None
+            raw = _minus(raw, read(scene, exp.relative_to, exp.quantity))
         if self._filter is not None:
             assert isinstance(raw, tuple)
             out = self._filter.filter(np.array(raw, dtype=np.float64), self.dt)
             raw = (float(out[0]), float(out[1]))
-        if isinstance(raw, tuple) and exp.component is not None:
-            if exp.component == "x":
+        return raw
+
+    def _project(self, raw: Value) -> Value:
+        """Apply ``change`` (minus the window's first value) and ``component``."""
+        if self._origin is not None:
+            raw = _minus(raw, self._origin)
+        if isinstance(raw, tuple) and self.exp.component is not None:
+            if self.exp.component == "x":
                 return raw[0]
-            if exp.component == "y":
+            if self.exp.component == "y":
                 return raw[1]
             return math.hypot(*raw)
         return raw
@@ -163,9 +188,12 @@ class Check:
         )
         if not wanted and self._filter is None:
             return
-        value = self._value(scene)
-        if value is None or not wanted:
+        raw = self._raw(scene)
+        if raw is None or not wanted:
             return
+        if exp.change and self._origin is None:
+            self._origin = raw
+        value = self._project(raw)
         self._last_time = t
         if exp.check == "at":
             self._taken = (t, value)

@@ -598,6 +598,12 @@ class Expectation(_Model):
     relative: NonNegative = Field(default=0.0, description="Tolerance relative to |equals|.")
     above: Finite | None = None
     below: Finite | None = None
+    relative_to: Name | None = Field(
+        default=None, description="Subtract this body's same quantity (position, velocity…)."
+    )
+    change: bool = Field(
+        default=False, description="Compare the change since the window's first step."
+    )
 
     @field_validator("window")
     @classmethod
@@ -868,6 +874,19 @@ def _check_expectation(
             f"{path}.body", f"no body named {exp.body!r}{_suggest(exp.body, list(names))}"
         )
         return
+    if exp.relative_to is not None:
+        if exp.relative_to not in names:
+            yield Problem(
+                f"{path}.relative_to",
+                f"no body named {exp.relative_to!r}{_suggest(exp.relative_to, list(names))}",
+            )
+        if exp.quantity not in ("position", "velocity", "angle", "angular_velocity"):
+            yield Problem(
+                f"{path}.relative_to",
+                "only position, velocity, angle and angular_velocity are relative to a body",
+            )
+    if exp.change and (exp.check == "at" or exp.quantity == "state"):
+        yield Problem(f"{path}.change", "change needs a window (always, eventually, mean)")
     q = exp.quantity
     seconds = level.settings.seconds
     if exp.check == "at":
