@@ -556,7 +556,8 @@ class Median3(_RowFilter):
     it is the ordinary median. Before a row has three samples, the median is taken over what
     there is with the same tie rule: the first output is the first sample and the second output
     is again the first sample (two samples always tie), so a spike at the second sample is
-    removed too.
+    removed too; a spike in the very first sample cannot be told from the signal and shows for
+    two steps.
 
     ``dt`` (s) is used only for the guards (see the module doc).
 
