@@ -308,3 +308,27 @@ def test_play_without_display_says_so(
         monkeypatch.delenv(var, raising=False)
     assert play("anything") == 2
     assert "--headless" in capsys.readouterr().err
+
+
+def test_restart_and_level_cycle_start_fresh_sessions() -> None:
+    """R restarts the level at t = 0 keeping the finished session's replay; PgDn/PgUp cycle the
+    level list; pause holds the time and '.' steps exactly once."""
+    built: list[str] = []
+
+    def load(name: str) -> Show:
+        built.append(name)
+        return scene(name)
+
+    app = App(load, "a", levels=["a", "b"], size=SIZE)
+    app.run_frames(10)
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_r))
+    assert app.world.steps == 0 and len(app.replays()) == 1
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_PAGEDOWN))
+    assert app.level == "b"
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_PAGEUP))
+    assert app.level == "a" and built == ["a", "a", "b", "a"]
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_p))
+    app.run_frames(5)
+    assert app.world.steps == 0
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_PERIOD))
+    assert app.world.steps == 1

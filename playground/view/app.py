@@ -118,8 +118,8 @@ class Accumulator:
 # -- input ---------------------------------------------------------------------------------------
 
 CONTROLS: tuple[tuple[str, str], ...] = (
-    ("A / D, ← / →", "move"),
-    ("W / S, ↑ / ↓", "climb while hanging"),
+    ("A / D, Left / Right", "move"),
+    ("W / S, Up / Down", "climb while hanging"),
     ("Space", "jump"),
     ("E", "grab / release"),
     ("F (hold)", "push"),
@@ -513,7 +513,7 @@ class App:
             self.scope if show.player is not None else None,
         )
         if self.show_help:
-            self.hud.draw_help(surf, CONTROLS)
+            self.hud.draw_help(surf, CONTROLS, show.description)
         return surf
 
     def screenshot(self, path: Path) -> Path:

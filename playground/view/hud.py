@@ -10,6 +10,7 @@ strip of the player's |support force|, raw and filtered, over the last seconds o
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -183,19 +184,31 @@ class Hud:
             pts = np.column_stack([xs, ys]).tolist()
             pygame.draw.lines(surf, colour, False, pts, width)
 
-    def draw_help(self, surf: pygame.Surface, lines: Sequence[tuple[str, str]]) -> None:
-        """Draw the controls (key, action) centred in the window."""
+    def draw_help(
+        self, surf: pygame.Surface, lines: Sequence[tuple[str, str]], about: str = ""
+    ) -> None:
+        """Draw the level's description (``about``, wrapped) and the controls (key, action),
+        centred in the window."""
         font = self.small
         h = font.get_linesize()
         kw = max(font.size(k)[0] for k, _ in lines) + 16
         w = kw + max(font.size(a)[0] for _, a in lines) + 24
         sw, sh = surf.get_size()
-        rect = pygame.Rect(0, 0, min(w, sw - 2 * MARGIN), min(h * len(lines) + 16, sh - 2 * MARGIN))
+        width = min(max(w, 480), sw - 2 * MARGIN)
+        wrapped = textwrap.wrap(about, width=max((width - 24) // max(font.size("n")[0], 1), 20))
+        rows = len(wrapped) + (1 if wrapped else 0) + len(lines)
+        rect = pygame.Rect(0, 0, width, min(h * rows + 16, sh - 2 * MARGIN))
         rect.center = (sw // 2, sh // 2)
         self._panel(surf, rect)
-        for i, (key, action) in enumerate(lines):
-            y = rect.y + 8 + i * h
+        y = rect.y + 8
+        for text in wrapped:
+            surf.blit(font.render(text, True, DIM), (rect.x + 12, y))
+            y += h
+        if wrapped:
+            y += h
+        for key, action in lines:
             if y + h > rect.bottom:
                 break
             surf.blit(font.render(key, True, COLOURS["player"]), (rect.x + 12, y))
             surf.blit(font.render(action, True, TEXT), (rect.x + 12 + kw, y))
+            y += h

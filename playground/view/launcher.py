@@ -139,7 +139,7 @@ def play(
         pygame.display.init()
         pygame.font.init()
         try:
-            window = pygame.display.set_mode(size, pygame.RESIZABLE)
+            window = pygame.display.set_mode(size)
         except pygame.error as exc:
             print(
                 f"playground play: cannot open a window ({exc}); use --headless.",
