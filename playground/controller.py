@@ -88,6 +88,7 @@ class ControllerConfig:
         grip_force: grip budget (the joint's max force), N.
         grip_slip: the grip lets go when its anchors drift this far apart, m.
         climb_speed: speed of the grip along the held body at full climb input, m/s.
+        push_reach: how far beyond the body the arms reach to push, m.
         push_force: push budget, N.
         crush_force: crushed when the load from above exceeds this, N.
     """
@@ -107,8 +108,8 @@ class ControllerConfig:
     traction: float = 1.0
     ground_force: float = 350.0
     air_force: float = 70.0
-    balance_frequency: float = 2.0
-    balance_damping: float = 1.0
+    balance_frequency: float = 2.5
+    balance_damping: float = 1.5
     balance_torque: float = 600.0
     balance_loss_time: float = 0.3
     settle_speed: float = 0.3
@@ -122,6 +123,7 @@ class ControllerConfig:
     grip_force: float = 2000.0
     grip_slip: float = 0.1
     climb_speed: float = 0.5
+    push_reach: float = 0.5
     push_force: float = 1000.0
     crush_force: float = 1500.0
 
@@ -281,7 +283,9 @@ class Controller:
         self.probe: GroundHit | None = None
         self.last_forces: ControllerForces = _NO_FORCES
         self.load: float = 0.0
-        """Load from above (contacts and the push's reaction along −up) of the last step, N."""
+        """Load borne from above in the last step: contacts and the push's reaction, N."""
+        self.contact_load: float = 0.0
+        """The contacts' part of :attr:`load`, N."""
         self.joint: pymunk.PivotJoint | None = None
         self._held_shape: pymunk.Shape | None = None
         self._jump_held = False
@@ -350,7 +354,9 @@ class Controller:
 
         hit = self._probe(world, ux, uy)
         self.probe = hit
-        self.load, contacts = self._contacts(world, ux, uy)
+        self.contact_load = self._contact_load(world, ux, uy)
+        pushed = self.last_forces.push
+        self.load = self.contact_load + max(0.0, -(pushed[0] * ux + pushed[1] * uy))
 
         if it.jump and not self._jump_held:
             self._jump_pressed_at = t
@@ -378,9 +384,10 @@ class Controller:
             state is State.AIRBORNE and t - self._grounded_at <= cfg.coyote_time
         )
         if may_jump and t - self._jump_pressed_at <= cfg.jump_buffer:
+            # The take-off step still carries the weight (hover and drive act once more), so the
+            # body leaves at exactly jump_speed relative to the ground.
             jumped = self._jump(world, hit if hit is not None else self._last_ground, ux, uy)
             if jumped:
-                grounded = False
                 self.state = State.AIRBORNE
 
         if grounded and hit is not None:
@@ -392,7 +399,7 @@ class Controller:
             drive = self._steer(world, it.move, ux, uy, dt)
 
         if it.push:
-            push = self._push(world, contacts, hit)
+            push = self._push(world, hit)
         if not cfg.lock_rotation:
             torque = self._balance(world, hit if grounded else None, ux, uy, dt)
 
@@ -427,12 +434,9 @@ class Controller:
             walkable=nx * ux + ny * uy >= self._cos_slope,
         )
 
-    def _contacts(
-        self, world: World, ux: float, uy: float
-    ) -> tuple[float, list[tuple[pymunk.Body, Vec, Vec, float]]]:
-        """Contacts of the last step: (load from above in N, [(other body, normal from self to
-        other, contact point, normal force N)])."""
-        out: list[tuple[pymunk.Body, Vec, Vec, float]] = []
+    def _contact_load(self, world: World, ux: float, uy: float) -> float:
+        """Force pressing on us along −up through contacts in the last step, N (the floor's push
+        along +up does not count)."""
         h = world.config.dt / world.config.substeps
         load = 0.0
 
@@ -440,21 +444,10 @@ class Controller:
             nonlocal load
             # Our body is the arbiter's first; total_impulse is the impulse on it.
             jx, jy = arb.total_impulse
-            nx, ny = arb.normal
-            points = arb.contact_point_set.points
-            if not points:
-                return
-            c = points[0].point_a
             load += max(0.0, -(jx * ux + jy * uy)) / h
-            other = arb.shapes[1].body
-            if other is None:
-                return
-            out.append((other, (nx, ny), (c.x, c.y), -(jx * nx + jy * ny) / h))
 
         self.body.each_arbiter(visit)
-        last = self.last_forces.push
-        load += max(0.0, last[0] * ux + last[1] * uy) if last is not _ZERO else 0.0
-        return load, out
+        return load
 
     # -- states ----------------------------------------------------------------------------------
 
@@ -489,7 +482,9 @@ class Controller:
         if self.joint is not None:
             self.state = State.HANGING
             return
-        if self.load > cfg.crush_force:
+        if self.load > cfg.crush_force and self.contact_load > 0.0:
+            # Crushed: bearing more than crush_force from above with the load still on us (a
+            # crusher held off at arm's length by the push no longer pins us).
             self.state = State.CRUSHED
         elif on_ground:
             self.state = State.GROUNDED
@@ -585,7 +580,7 @@ class Controller:
         )
         budget = cfg.balance_torque
         torque = max(-budget, min(budget, need))
-        touching = hit is not None or self.load > 0.0 or self._touching()
+        touching = hit is not None or self.contact_load > 0.0 or self._touching()
         if abs(need) > budget and touching and self.state is not State.GETTING_UP:
             self._saturated += dt
         else:
@@ -623,26 +618,40 @@ class Controller:
         self._rising = True
         return True
 
-    def _push(
-        self,
-        world: World,
-        contacts: list[tuple[pymunk.Body, Vec, Vec, float]],
-        hit: GroundHit | None,
-    ) -> Vec:
-        """Push the dynamic body pressing hardest on us (not the ground), away along the normal."""
-        best: tuple[pymunk.Body, Vec, Vec, float] | None = None
-        for c in contacts:
-            other = c[0]
-            if other.body_type != pymunk.Body.DYNAMIC or (hit is not None and other is hit.body):
-                continue
-            if best is None or c[3] > best[3]:
-                best = c
-        if best is None:
+    def _push(self, world: World, hit: GroundHit | None) -> Vec:
+        """Push the nearest dynamic body within reach of the head or the chest (not the ground),
+        away from us, with the whole push budget; the reaction goes onto us."""
+        cfg = self.config
+        p = self.body.position
+        ax, ay = self.axis
+        half = cfg.half_length
+        ground = hit.body if hit is not None else None
+        best: pymunk.PointQueryInfo | None = None
+        origin = (p.x, p.y)
+        for qx, qy in ((p.x + ax * half, p.y + ay * half), (p.x, p.y)):
+            for info in world.space.point_query(
+                (qx, qy), cfg.radius + cfg.push_reach, self._filter
+            ):
+                shape = info.shape
+                if (
+                    shape is None
+                    or shape.sensor
+                    or shape.body is None
+                    or shape.body is ground
+                    or shape.body.body_type != pymunk.Body.DYNAMIC
+                ):
+                    continue
+                if best is None or info.distance < best.distance:
+                    best, origin = info, (qx, qy)
+        if best is None or best.shape is None or best.shape.body is None:
             return _ZERO
-        other, (nx, ny), point, _ = best
-        f = self.config.push_force
-        world.apply_force(other, (f * nx, f * ny), point=point, category=Category.SUPPORT)
-        world.apply_force(self.body, (-f * nx, -f * ny), point=point, category=Category.SUPPORT)
+        cx, cy = best.point
+        nx, ny = _unit_or(cx - origin[0], cy - origin[1], (ax, ay))
+        f = cfg.push_force
+        world.apply_force(
+            best.shape.body, (f * nx, f * ny), point=(cx, cy), category=Category.SUPPORT
+        )
+        world.apply_force(self.body, (-f * nx, -f * ny), category=Category.SUPPORT)
         return (-f * nx, -f * ny)
 
     # -- grab, hang, climb -----------------------------------------------------------------------
