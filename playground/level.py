@@ -401,6 +401,8 @@ class Actor(_Model):
     name: Name
     position: Vec
     angle: Finite = 0.0
+    velocity: Vec = Field(default=(0.0, 0.0), description="Initial velocity, m/s.")
+    angular_velocity: Finite = Field(default=0.0, description="Initial spin, rad/s.")
     controller: dict[str, float | bool] = Field(
         default_factory=dict, description="ControllerConfig fields (SI), e.g. mass = 70."
     )

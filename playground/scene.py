@@ -319,7 +319,7 @@ def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
         )
     elif actor.patrol is not None:
         source = Patrol(speed=actor.patrol.speed, period=actor.patrol.period)
-    return Controller(
+    controller = Controller(
         world,
         actor.name,
         actor.position,
@@ -327,6 +327,9 @@ def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
         source=source,
         angle=actor.angle,
     )
+    controller.body.velocity = actor.velocity
+    controller.body.angular_velocity = actor.angular_velocity
+    return controller
 
 
 def _body(world: World, name: str) -> pymunk.Body:
