@@ -26,7 +26,7 @@ from typing import Any
 
 import pygame
 
-from playground.intents import Intent
+from playground.intents import Intent, IntentSource
 from playground.view.camera import Camera
 from playground.view.draw import (
     COLOURS,
@@ -152,6 +152,8 @@ class Keyboard:
 
     def __init__(self) -> None:
         self.held: set[int] = set()
+        self.touched = False
+        """Whether any player key was pressed yet (until then a level's script plays)."""
         self.grab = False
         self.flipped = False
         self._flip_pending = False
@@ -160,6 +162,7 @@ class Keyboard:
 
     def key_down(self, key: int) -> None:
         self.held.add(key)
+        self.touched = True
         if key == pygame.K_e:
             self.grab = not self.grab
         elif key == pygame.K_g:
@@ -204,9 +207,9 @@ class Keyboard:
 class Session:
     """One run of a level: the show, the intent source (keyboard or a replay) and the recorder.
 
-    :meth:`input_hook` runs once per step in the world's INPUTS stage: it reads the keyboard (or
-    the replay), records the intent, and hands it to the player's controller, whose intent source
-    the session becomes (it replaces a level's scripted input while someone plays).
+    :meth:`input_hook` runs once per step in the world's INPUTS stage: it takes the intent from
+    the replay, or from the level's script until the first player key, or from the keyboard;
+    records it; and hands it to the player's controller, whose intent source the session becomes.
     """
 
     def __init__(self, show: Show, replay: Replay | None = None) -> None:
@@ -215,12 +218,14 @@ class Session:
         self.playback = replay
         self.recorder: Recorder | None = None
         self.current = Intent()
+        self.script: IntentSource | None = None
         player = show.player
         if player is not None and player in show.controllers:
             self.recorder = Recorder(level=show.name, dt=show.world.config.dt, actor=player)
             ctrl = show.controllers[player]
             if hasattr(ctrl, "source"):
-                # The keyboard (or the replay) replaces the level's script for the player.
+                # The level's script plays until the first key, then the keyboard takes over.
+                self.script = ctrl.source
                 ctrl.source = self
             show.world.on(Stage.INPUTS, self.input_hook)
         elif replay is not None:
@@ -254,6 +259,8 @@ class Session:
         assert self.show.player is not None and self.recorder is not None
         if self.playback is not None:
             intent = self.playback.intent_at(world.steps)
+        elif self.script is not None and not self.keyboard.touched:
+            intent = self.script.intent(world.time)
         else:
             intent = self.keyboard.intent(world.gravity_at(self.show.player), self.nearest_enemy())
         self.current = intent
@@ -497,6 +504,8 @@ class App:
         notes = ["H: controls"]
         if self.session.playback is not None:
             notes.append("replaying")
+        elif self.session.script is not None and not self.session.keyboard.touched:
+            notes.append("scripted demo: press a key to take over")
         self.hud.draw(
             surf,
             HudInfo(
