@@ -65,6 +65,8 @@ class ControllerConfig:
         probe_radius: radius of the probe's swept circle, m.
         hover_frequency: natural frequency of the hover spring, Hz (k = m·(2πf)²).
         hover_damping: damping ratio of the hover spring (c = 2ζ·m·2πf); 1 is critical.
+        hover_force: the legs' budget: the most the hover pushes with, N. Beyond it the capsule
+            bottoms out and the contact takes the rest (a hard landing, a crushing load).
         max_slope: steepest walkable ground, rad between its normal and up.
         max_speed: walking speed at full move input, m/s.
         drive_time: time constant with which the drive closes the gap to its goal velocity, s.
@@ -102,6 +104,7 @@ class ControllerConfig:
     probe_radius: float = 0.1
     hover_frequency: float = 5.0
     hover_damping: float = 1.0
+    hover_force: float = 5000.0
     max_slope: float = 0.7
     max_speed: float = 4.0
     drive_time: float = 0.05
@@ -342,8 +345,9 @@ class Controller:
         self._gravity_actions(world, it)
         gx, gy = world.gravity_at(self.name)
 
-        # Up: perceived while supported, the field while airborne (it sees where it will land).
-        supported = self.state not in (State.AIRBORNE, State.OFF_BALANCE)
+        # Up: perceived while supported, the field while airborne (it sees where it will land),
+        # fallen or getting up (contacts while lying and rising shake the inner ear).
+        supported = self.state in (State.GROUNDED, State.HANGING, State.CRUSHED)
         if supported:
             ux, uy = world.perceived_up(self.name)
             if not (math.isfinite(ux) and math.isfinite(uy)):
@@ -390,7 +394,7 @@ class Controller:
             if jumped:
                 self.state = State.AIRBORNE
 
-        if grounded and hit is not None:
+        if grounded and hit is not None and hit.walkable:
             hover_f = self._hover(world, hit, gx, gy, t)
             hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
             if state is not State.CRUSHED:
@@ -466,13 +470,13 @@ class Controller:
             if self._still >= cfg.settle_time and hit is not None:
                 self.state = State.GETTING_UP
                 self._getup_at = t
-                self._getup_from = hit.distance
+                self._getup_from = self._height(hit)
                 self._saturated = 0.0
             return
         if state is State.GETTING_UP:
             if hit is None:
                 self.state = State.AIRBORNE
-            elif t - self._getup_at >= cfg.getup_time:
+            elif t - self._getup_at >= cfg.getup_time and self._steady(world):
                 self.state = State.GROUNDED
                 self._grounded_at = t
             return
@@ -492,6 +496,13 @@ class Controller:
             self.state = State.AIRBORNE
         if self.state is not State.AIRBORNE and on_ground:
             self._grounded_at = t
+
+    def _steady(self, world: World) -> bool:
+        """Up again: the axis and the perceived up both within max_slope of the up used while
+        getting up (after a fall the inner ear needs a moment before it is trusted again)."""
+        ux, uy = self.up
+        px, py = world.perceived_up(self.name)
+        return abs(self.tilt) < self.config.max_slope and px * ux + py * uy >= self._cos_slope
 
     def _is_still(self, hit: GroundHit | None) -> bool:
         cfg = self.config
@@ -515,18 +526,22 @@ class Controller:
             s = min(1.0, (t - self._getup_at) / cfg.getup_time)
             target = self._getup_from + (target - self._getup_from) * s * s * (3.0 - 2.0 * s)
         nx, ny = hit.normal
-        p = self.body.position
-        height = (p.x - hit.point[0]) * nx + (p.y - hit.point[1]) * ny
+        height = self._height(hit)
         vx, vy = self.body.velocity
         gvx, gvy = hit.ground_velocity
         v_n = (vx - gvx) * nx + (vy - gvy) * ny
         weight = cfg.mass * max(0.0, -(gx * nx + gy * ny))
-        f = max(0.0, weight + self._k * (target - height) - self._c * v_n)
+        f = min(cfg.hover_force, max(0.0, weight + self._k * (target - height) - self._c * v_n))
         if f > 0.0:
             fx, fy = f * nx, f * ny
             world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
             world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=Category.SUPPORT)
         return f
+
+    def _height(self, hit: GroundHit) -> float:
+        """Height of the centre over the hit point along the ground normal, m."""
+        p = self.body.position
+        return (p.x - hit.point[0]) * hit.normal[0] + (p.y - hit.point[1]) * hit.normal[1]
 
     def _drive(
         self,
