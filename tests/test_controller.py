@@ -98,6 +98,25 @@ def test_drive_force_on_an_accelerating_platform_is_m_a(accel: float) -> None:
     assert player.state is State.GROUNDED
 
 
+def test_a_crate_under_the_player_feels_the_player_as_a_contact_load() -> None:
+    """Newton's third law with the right category: the hover's reaction on a dynamic crate is a
+    SUPPORT force, so the crate's floor carries both weights while the crate itself still feels
+    only its own weight (perceived gravity g), and the player feels its own."""
+    crate_mass = 20.0
+    world = flat_world()
+    world.add_box("crate", mass=crate_mass, size=(2.0, 0.5), position=(0.0, 0.25))
+    world.track("crate")
+    player = Controller(world, "player", (0.0, 0.5 + 0.95))
+    world.run(3.0)
+    assert player.probe is not None and player.probe.body is world.body("crate")
+    crate = world.forces("crate")
+    total = (crate_mass + M) * G
+    assert abs(crate.engine[1] - total) < TOL_SUPPORT_REL * total
+    assert abs(crate.support[1] - crate_mass * G) < TOL_SUPPORT_REL * total
+    assert abs(world.perceived_gravity("crate")[1] + G) < TOL_SUPPORT_REL * G * total / crate_mass
+    assert abs(world.forces("player").support[1] - M * G) < TOL_SUPPORT_REL * M * G
+
+
 def test_walking_reaches_max_speed_relative_to_the_ground() -> None:
     """Drive goal: ground velocity + move·max_speed along the tangent (right for up = +y)."""
     world = World()

@@ -6,6 +6,8 @@ lets go, a push budget below a crusher's weight leaves the player pinned).
 
 from __future__ import annotations
 
+import math
+
 import pymunk
 import pytest
 
@@ -82,6 +84,42 @@ def test_jump_input_buffer() -> None:
         while world2.time < landing + 0.3:
             world2.step()
             rise = max(rise, player2.body.velocity.y)
+        assert (rise > 0.5 * cfg.jump_speed) is jumps
+
+
+def test_coyote_time_allows_a_jump_just_after_walking_off_a_ledge() -> None:
+    """Coyote time: a press within coyote_time of leaving the ground still jumps; later not."""
+    cfg = ControllerConfig()
+
+    def ledge(script: Script | None) -> tuple[World, Controller]:
+        world = World()
+        world.add_static_segment((-10.0, 0.0), (0.0, 0.0))
+        world.add_static_segment((-10.0, -6.0), (20.0, -6.0))
+        walk = Script(((0.0, Intent(move=1.0)),))
+        return world, Controller(world, "player", (-2.0, 0.95), cfg, script or walk)
+
+    world, player = ledge(None)
+    while player.body.position.x < -0.5:
+        world.step()
+    assert player.state is State.GROUNDED
+    while player.state is not State.AIRBORNE:
+        world.step()
+    left = world.time
+    for press_after, jumps in ((0.5 * cfg.coyote_time, True), (3.0 * cfg.coyote_time, False)):
+        press = left + press_after
+        script = Script(
+            (
+                (0.0, Intent(move=1.0)),
+                (press, Intent(move=1.0, jump=True)),
+                (press + 0.05, Intent()),
+            )
+        )
+        world, player = ledge(script)
+        rise = -math.inf
+        while world.time < press + 0.2:
+            world.step()
+            if world.time > press:
+                rise = max(rise, player.body.velocity.y)
         assert (rise > 0.5 * cfg.jump_speed) is jumps
 
 
