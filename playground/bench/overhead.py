@@ -1,0 +1,339 @@
+"""The overhead profile: what each stage and each effect costs as bodies grow.
+
+A pile of boxes resting on a floor is built twice — in a :class:`~playground.world.World` with one
+effect switched on, and in a bare ``pymunk.Space`` with the same bodies in the same order — and
+both are stepped in interleaved blocks in the same process, so the ratio holds on a busy machine.
+A world that uses no effect (uniform gravity is ``space.gravity``) must cost no more than
+:data:`NO_EFFECT_BUDGET` × bare pymunk; every effect's marginal cost is listed against it.
+
+>>> rows = profile(sizes=(10,), effects=("none",), repeats=1)
+>>> rows[0].effect, rows[0].bodies
+('none', 10)
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import pymunk
+
+from playground.controller import Controller
+from playground.gravity import GravityRule, Radial, RotatingRoom
+from playground.movers import Sine
+from playground.world import Stage, World, WorldConfig
+
+__all__ = [
+    "EFFECTS",
+    "NO_EFFECT_BUDGET",
+    "SIZES",
+    "OverheadRow",
+    "overhead_figure",
+    "overhead_markdown",
+    "profile",
+]
+
+NO_EFFECT_BUDGET = 1.05
+"""A scene that uses no effect may cost at most this many times bare pymunk."""
+
+SIZES = (10, 30, 100, 300, 1000, 3000)
+"""Body counts profiled by default."""
+
+QUICK_SIZES = (10, 100)
+"""Body counts profiled with ``quick``."""
+
+BOX = 0.5
+"""Edge of every box, m."""
+
+COLUMN = 5
+"""Boxes per column of the pile."""
+
+MOVERS = 10
+"""Kinematic platforms in the "movers" effect."""
+
+BLOCK_SECONDS = 0.02
+"""Wall time aimed at per timed block, s; the cost is the median over blocks."""
+
+
+def _positions(n: int) -> list[tuple[float, float]]:
+    """Box centres: columns of :data:`COLUMN` boxes, 0.1 m apart, resting on y = 0."""
+    return [((i // COLUMN) * (BOX + 0.1), BOX / 2 + (i % COLUMN) * BOX) for i in range(n)]
+
+
+def _floor_length(n: int) -> float:
+    return (n // COLUMN + 1) * (BOX + 0.1) + 2.0
+
+
+def _bare(n: int, config: WorldConfig) -> pymunk.Space:
+    """The pile in a bare space, set up as :class:`World` sets up its space."""
+    space = pymunk.Space()
+    space.iterations = config.iterations
+    space.collision_slop = config.collision_slop
+    space.gravity = (0.0, -9.81)
+    seg = pymunk.Segment(space.static_body, (-2.0, -0.05), (_floor_length(n), -0.05), 0.05)
+    seg.friction = 1.0
+    space.add(seg)
+    for x, y in _positions(n):
+        body = pymunk.Body(1.0, pymunk.moment_for_box(1.0, (BOX, BOX)))
+        body.position = (x, y)
+        shape = pymunk.Poly.create_box(body, (BOX, BOX))
+        shape.friction = 0.8
+        shape.elasticity = 0.0
+        space.add(body, shape)
+    return space
+
+
+def _world(n: int, config: WorldConfig) -> World:
+    world = World(config)
+    world.add_static_segment((-2.0, -0.05), (_floor_length(n), -0.05), radius=0.05)
+    for i, p in enumerate(_positions(n)):
+        world.add_box(f"box{i}", mass=1.0, size=(BOX, BOX), position=p)
+    return world
+
+
+def _rotating_room(world: World, n: int) -> None:
+    world.gravity = RotatingRoom(rate=0.1)
+
+
+def _radial(world: World, n: int) -> None:
+    # A planet so large that its surface is flat under the pile: the pile still rests.
+    world.gravity = Radial(center=(0.0, -1000.0), radius=1000.0, softening=0.0)
+
+
+def _rules(world: World, n: int) -> None:
+    for i in range(0, n, 10):
+        world.set_gravity_rule(f"box{i}", GravityRule(scale=1.0 + 1e-3))
+
+
+def _movers(world: World, n: int) -> None:
+    for i in range(MOVERS):
+        body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+        shape = pymunk.Poly.create_box(body, (1.0, 0.1))
+        world.add(f"mover{i}", body, shape)
+        world.add_mover(f"mover{i}", Sine(center=(2.0 * i, 20.0), amplitude=(1.0, 0.0)))
+
+
+def _track_one(world: World, n: int) -> None:
+    world.track("box0", perceive=False)
+
+
+def _track_all(world: World, n: int) -> None:
+    world.track(*(f"box{i}" for i in range(n)), perceive=False)
+
+
+def _perceive_one(world: World, n: int) -> None:
+    world.track("box0", perceive=True)
+
+
+def _controller(world: World, n: int) -> None:
+    Controller(world, "player", position=(-1.0, 1.0))
+
+
+EFFECTS: dict[str, Callable[[World, int], None] | None] = {
+    "none": None,
+    "rotating room": _rotating_room,
+    "radial field": _radial,
+    "per-body rule (every 10th body)": _rules,
+    f"movers ({MOVERS})": _movers,
+    "tracked solver (1 body)": _track_one,
+    "tracked solver (every body)": _track_all,
+    "contact split (1 body)": _track_one,
+    "perceived-gravity filter (1 body)": _perceive_one,
+    "controller (1)": _controller,
+}
+"""Each effect and how it is switched on (``None``: uniform gravity only)."""
+
+
+@dataclass(frozen=True, slots=True)
+class OverheadRow:
+    """One effect at one body count.
+
+    Attributes:
+        bodies: boxes in the pile.  effect: a key of :data:`EFFECTS`.
+        us_per_step: the world, µs per step.  bare_us: bare pymunk, µs per step.
+        ratio: us_per_step / bare_us.
+        marginal_us: us_per_step − the "none" world's at the same size, µs.
+        events_us … filter_us: mean µs per step of each stage (0 when it did not run).
+    """
+
+    bodies: int
+    effect: str
+    us_per_step: float
+    bare_us: float
+    ratio: float
+    marginal_us: float
+    events_us: float
+    gravity_us: float
+    movers_us: float
+    control_us: float
+    physics_us: float
+    forces_us: float
+    filter_us: float
+
+
+_STAGES = (Stage.EVENTS, Stage.GRAVITY, Stage.MOVERS, Stage.CONTROL, Stage.PHYSICS, Stage.FORCES,
+           Stage.FILTER)  # fmt: skip
+
+
+def _time_blocks(world: World, bare: pymunk.Space, repeats: int) -> tuple[float, float]:
+    """(world, bare) µs per step: medians over interleaved blocks."""
+    dt = world.config.dt
+    t0 = time.perf_counter()
+    world.step()
+    bare.step(dt)
+    per = max(time.perf_counter() - t0, 1e-6)
+    steps = max(3, min(200, round(2.0 * BLOCK_SECONDS / per)))
+    ours, theirs = [], []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for _ in range(steps):
+            world.step()
+        ours.append((time.perf_counter() - t0) / steps)
+        t0 = time.perf_counter()
+        for _ in range(steps):
+            bare.step(dt)
+        theirs.append((time.perf_counter() - t0) / steps)
+    return 1e6 * statistics.median(ours), 1e6 * statistics.median(theirs)
+
+
+def _stage_means(world: World, steps: int) -> dict[Stage, float]:
+    """Mean µs per step of each stage over ``steps`` timed steps (timing switched on)."""
+    world.config = replace(world.config, timing=True)
+    for s in Stage:
+        world.timings[s].total = 0.0
+        world.timings[s].calls = 0
+    for _ in range(steps):
+        world.step()
+    world.config = replace(world.config, timing=False)
+    return {s: 1e6 * world.timings[s].total / steps for s in _STAGES}
+
+
+def profile(
+    sizes: Sequence[int] | None = None,
+    effects: Sequence[str] | None = None,
+    *,
+    quick: bool = False,
+    repeats: int = 5,
+    settle_steps: int = 30,
+) -> list[OverheadRow]:
+    """Time every effect at every size against bare pymunk; rows by size, then effect."""
+    sizes = tuple(sizes) if sizes is not None else (QUICK_SIZES if quick else SIZES)
+    effects = tuple(effects) if effects is not None else tuple(EFFECTS)
+    for e in effects:
+        if e not in EFFECTS:
+            raise ValueError(f"effects: expected names from {list(EFFECTS)}, got {e!r}")
+    if quick:
+        repeats = min(repeats, 2)
+    rows: list[OverheadRow] = []
+    for n in sizes:
+        none_us = math.nan
+        for effect in effects:
+            config = WorldConfig(contact_split=effect.startswith("contact split"))
+            world = _world(n, config)
+            setup = EFFECTS[effect]
+            if setup is not None:
+                setup(world, n)
+            bare = _bare(n, config)
+            for _ in range(settle_steps):
+                world.step()
+                bare.step(config.dt)
+            us, bare_us = _time_blocks(world, bare, repeats)
+            stages = _stage_means(world, max(3, min(50, round(0.02 / (us * 1e-6)))))
+            if effect == "none":
+                none_us = us
+            rows.append(
+                OverheadRow(
+                    bodies=n,
+                    effect=effect,
+                    us_per_step=us,
+                    bare_us=bare_us,
+                    ratio=us / bare_us,
+                    marginal_us=us - none_us if math.isfinite(none_us) else math.nan,
+                    events_us=stages[Stage.EVENTS],
+                    gravity_us=stages[Stage.GRAVITY],
+                    movers_us=stages[Stage.MOVERS],
+                    control_us=stages[Stage.CONTROL],
+                    physics_us=stages[Stage.PHYSICS],
+                    forces_us=stages[Stage.FORCES],
+                    filter_us=stages[Stage.FILTER],
+                )
+            )
+    return rows
+
+
+def _table(header: Sequence[str], body: Sequence[Sequence[str]]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(row) + " |" for row in body]
+    return "\n".join(lines)
+
+
+def overhead_markdown(rows: Sequence[OverheadRow]) -> str:
+    """Three tables: µs per step (× bare), marginal µs per effect, stages at the largest size."""
+    sizes = sorted({r.bodies for r in rows})
+    effects = list(dict.fromkeys(r.effect for r in rows))
+    at = {(r.bodies, r.effect): r for r in rows}
+    bare = [
+        "bare pymunk",
+        *(f"{statistics.median(r.bare_us for r in rows if r.bodies == n):.0f}" for n in sizes),
+    ]
+    total = [
+        [e, *(f"{at[n, e].us_per_step:.0f} (×{at[n, e].ratio:.2f})" for n in sizes)]
+        for e in effects
+    ]
+    marginal = [
+        [e, *(f"{at[n, e].marginal_us:+.0f}" for n in sizes)] for e in effects if e != "none"
+    ]
+    big = sizes[-1]
+    stage_names = ("events", "gravity", "movers", "control", "physics", "forces", "filter")
+    stages = [[e, *(f"{getattr(at[big, e], s + '_us'):.0f}" for s in stage_names)] for e in effects]
+    header = ["effect", *(f"{n} bodies" for n in sizes)]
+    return (
+        "### µs per step (× bare pymunk, same run)\n\n"
+        + _table(header, [bare, *total])
+        + "\n\n### Marginal µs per step of each effect (against no effect)\n\n"
+        + _table(header, marginal)
+        + f"\n\n### Mean µs per step of each stage at {big} bodies\n\n"
+        + _table(["effect", *stage_names], stages)
+        + "\n"
+    )
+
+
+def overhead_figure(rows: Sequence[OverheadRow], path: Path) -> None:
+    """Marginal cost of each effect (and the no-effect ratio) against bodies, into ``path``.
+
+    Needs matplotlib (``pip install playground[bench]``).
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    sizes = sorted({r.bodies for r in rows})
+    effects = list(dict.fromkeys(r.effect for r in rows))
+    at = {(r.bodies, r.effect): r for r in rows}
+    fig, (a, b) = plt.subplots(1, 2, figsize=(13, 5))
+    for e in effects:
+        if e == "none":
+            continue
+        ys = [max(at[n, e].marginal_us, 0.1) for n in sizes]
+        a.plot(sizes, ys, "-o", ms=3, label=e)
+    a.set(
+        xscale="log",
+        yscale="log",
+        xlabel="bodies",
+        ylabel="marginal µs per step",
+        title="Cost of each effect",
+    )
+    a.legend(fontsize=7)
+    b.plot(sizes, [at[n, "none"].ratio for n in sizes], "-o", label="no effect / bare pymunk")
+    b.axhline(NO_EFFECT_BUDGET, color="red", ls="--", lw=0.8, label=f"{NO_EFFECT_BUDGET}× budget")
+    b.set(xscale="log", xlabel="bodies", ylabel="× bare pymunk", title="World with no effect")
+    b.legend(fontsize=8)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
