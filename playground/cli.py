@@ -31,6 +31,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
+from playground.bench import cli as bench_cli
 from playground.level import LevelError, find, load, schema, shipped
 
 __all__ = ["main", "parser"]
@@ -225,6 +226,10 @@ def parser() -> argparse.ArgumentParser:
     p = sub.add_parser("schema", help="print the level JSON Schema")
     p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")
     p.set_defaults(func=cmd_schema)
+
+    p = sub.add_parser("bench", help="what accuracy and each effect cost (docs/accuracy.md)")
+    bench_cli.configure(p)
+    p.set_defaults(func=bench_cli.run)
     return top
 
 

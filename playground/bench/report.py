@@ -411,7 +411,7 @@ def accuracy_figure(rows: Sequence[Result], path: Path) -> list[Config]:
     return [configs[i] for i in front]
 
 
-COMMAND = "python -m playground.bench docs"
+COMMAND = "playground bench docs"
 """The one command that regenerates docs/accuracy.md, its CSV and JSON files and figures."""
 
 
