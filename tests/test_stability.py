@@ -274,6 +274,8 @@ def _check_budgets(c: Controller, where: str) -> None:
     cfg = c.config
     f = c.last_forces
     slack = 1.0 + TOL_BUDGET
+    hover = math.hypot(*f.hover)
+    assert hover <= cfg.hover_force * slack, f"{where}: hover {hover} N"
     drive = math.hypot(*f.drive)
     assert drive <= max(cfg.ground_force, cfg.air_force) * slack, f"{where}: drive {drive} N"
     assert abs(f.balance_torque) <= cfg.balance_torque * slack, (

@@ -55,7 +55,7 @@ COLUMN = 5
 MOVERS = 10
 """Kinematic platforms in the "movers" effect."""
 
-BLOCK_SECONDS = 0.02
+BLOCK_SECONDS = 0.01
 """Wall time aimed at per timed block, s; the cost is the median over blocks."""
 
 
@@ -155,7 +155,7 @@ class OverheadRow:
     Attributes:
         bodies: boxes in the pile.  effect: a key of :data:`EFFECTS`.
         us_per_step: the world, µs per step.  bare_us: bare pymunk, µs per step.
-        ratio: us_per_step / bare_us.
+        ratio: world / bare, the median over adjacent pairs of timed blocks.
         marginal_us: us_per_step − the "none" world's at the same size, µs.
         events_us … filter_us: mean µs per step of each stage (0 when it did not run).
     """
@@ -179,8 +179,9 @@ _STAGES = (Stage.EVENTS, Stage.GRAVITY, Stage.MOVERS, Stage.CONTROL, Stage.PHYSI
            Stage.FILTER)  # fmt: skip
 
 
-def _time_blocks(world: World, bare: pymunk.Space, repeats: int) -> tuple[float, float]:
-    """(world, bare) µs per step: medians over interleaved blocks."""
+def _time_blocks(world: World, bare: pymunk.Space, repeats: int) -> tuple[float, float, float]:
+    """(world, bare) µs per step, medians over interleaved blocks, and the median of the ratios
+    of adjacent blocks (robust to the machine's load drifting during the run)."""
     dt = world.config.dt
     t0 = time.perf_counter()
     world.step()
@@ -197,7 +198,8 @@ def _time_blocks(world: World, bare: pymunk.Space, repeats: int) -> tuple[float,
         for _ in range(steps):
             bare.step(dt)
         theirs.append((time.perf_counter() - t0) / steps)
-    return 1e6 * statistics.median(ours), 1e6 * statistics.median(theirs)
+    ratio = statistics.median(a / b for a, b in zip(ours, theirs, strict=True))
+    return 1e6 * statistics.median(ours), 1e6 * statistics.median(theirs), ratio
 
 
 def _stage_means(world: World, steps: int) -> dict[Stage, float]:
@@ -217,7 +219,7 @@ def profile(
     effects: Sequence[str] | None = None,
     *,
     quick: bool = False,
-    repeats: int = 5,
+    repeats: int = 9,
     settle_steps: int = 30,
 ) -> list[OverheadRow]:
     """Time every effect at every size against bare pymunk; rows by size, then effect."""
@@ -241,7 +243,7 @@ def profile(
             for _ in range(settle_steps):
                 world.step()
                 bare.step(config.dt)
-            us, bare_us = _time_blocks(world, bare, repeats)
+            us, bare_us, ratio = _time_blocks(world, bare, repeats)
             stages = _stage_means(world, max(3, min(50, round(0.02 / (us * 1e-6)))))
             if effect == "none":
                 none_us = us
@@ -251,7 +253,7 @@ def profile(
                     effect=effect,
                     us_per_step=us,
                     bare_us=bare_us,
-                    ratio=us / bare_us,
+                    ratio=ratio,
                     marginal_us=us - none_us if math.isfinite(none_us) else math.nan,
                     events_us=stages[Stage.EVENTS],
                     gravity_us=stages[Stage.GRAVITY],
