@@ -13,11 +13,12 @@ from __future__ import annotations
 
 import csv
 import io
+import itertools
 import json
 import math
 import statistics
 from collections.abc import Iterable, Sequence
-from dataclasses import asdict, dataclass, fields
+from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 
 from playground.bench.accuracy import DTS, FILTERS, ITERATIONS, SUBSTEPS, Result
@@ -223,9 +224,13 @@ class Findings:
         hover_errors: (dt in s, error) of the hover at each swept dt.
         dt_1pct: per scene, the largest dt (s) with error under 1 % (NaN: none).
         substep_hover: hover error at dt 1/30 with 4 substeps, and at dt 1/120 with 1.
-        substep_cost: cost (µs/step) of the same two.
+        substep_cost: cost of the same two, ms of computing per simulated second.
         fd_over_reverse: median over scenes of finite-difference error / reverse error.
         reverse_us, bare_us: median cost per step at the base knobs, µs.
+        plateau: per scene, the iteration count past which its error falls by less than 10 %.
+        hover_dt_interpolated: dt (s) where the hover error crosses 1 %, interpolated on the
+            log-log line between the swept steps that bracket it.
+        stack_iterations_01pct: fewest iterations with the stack's error under 0.1 %.
     """
 
     stack_iterations: int
@@ -239,12 +244,24 @@ class Findings:
     fd_over_reverse: float
     reverse_us: float
     bare_us: float
+    plateau: dict[str, int] = field(default_factory=dict)
+    hover_dt_interpolated: float = math.nan
+    stack_iterations_01pct: int = 0
+
+
+ROUND_OFF = 1e-6
+"""Relative errors below this are round-off: a knob that only moves them has stopped paying."""
 
 
 def _stops_paying(values: Sequence[float]) -> int:
-    """Index of the first value within :data:`STOPS_PAYING` of the best at or after it."""
+    """Index of the first value within :data:`STOPS_PAYING` of the best at or after it (or
+    below :data:`ROUND_OFF`).
+
+    >>> _stops_paying([0.3, 0.1, 0.095, 0.094]), _stops_paying([1e-3, 1e-9, 1e-15])
+    (1, 1)
+    """
     for i, v in enumerate(values):
-        if v <= min(values[i:]) * (1.0 + STOPS_PAYING):
+        if v <= min(values[i:]) * (1.0 + STOPS_PAYING) or v < ROUND_OFF:
             return i
     return len(values) - 1
 
@@ -280,7 +297,22 @@ def findings(rows: Sequence[Result]) -> Findings:
         for s in fd
         if s in base and base[s].error > 0 and s != "landing"
     ]
+    plateau = {}
+    for scene in SCENES:
+        swept = [
+            (i, r.error) for i in ITERATIONS if (r := _pick(rows, Knobs(iterations=i)).get(scene))
+        ]
+        if swept:
+            plateau[scene] = int(swept[_stops_paying([e for _, e in swept])][0])
+    crossing = math.nan
+    for (dt0, e0), (dt1, e1) in itertools.pairwise(hover):
+        if e0 >= ONE_PERCENT > e1 and e0 > 0 and e1 > 0:
+            t = math.log(e0 / ONE_PERCENT) / math.log(e0 / e1)
+            crossing = math.exp(math.log(dt0) + t * (math.log(dt1) - math.log(dt0)))
     return Findings(
+        plateau=plateau,
+        hover_dt_interpolated=crossing,
+        stack_iterations_01pct=next((i for i, e in its_ok if e < ONE_PERCENT / 10), 0),
         stack_iterations=stack_iterations,
         stack_iterations_1pct=stack_1pct,
         stack_errors=tuple(its_ok),
@@ -292,8 +324,8 @@ def findings(rows: Sequence[Result]) -> Findings:
             base["hover"].error if "hover" in base else math.nan,
         ),
         substep_cost=(
-            sub.cost_us if sub else math.nan,
-            base["hover"].cost_us if "hover" in base else math.nan,
+            sub.cost_us / sub.dt / 1000.0 if sub else math.nan,
+            base["hover"].cost_us / base["hover"].dt / 1000.0 if "hover" in base else math.nan,
         ),
         fd_over_reverse=statistics.median(ratios) if ratios else math.nan,
         reverse_us=statistics.median(r.cost_us for r in base.values()) if base else math.nan,
@@ -303,12 +335,13 @@ def findings(rows: Sequence[Result]) -> Findings:
 
 @dataclass(frozen=True, slots=True)
 class Config:
-    """One configuration across scenes: its mean error and mean cost, for the front."""
+    """One configuration across scenes: its mean error and its mean cost in ms of computing per
+    simulated second (µs per step / dt: a smaller dt takes more steps), for the front."""
 
     label: str
     estimator: str
     error: float
-    cost_us: float
+    cost_ms: float
 
 
 def configurations(rows: Sequence[Result]) -> list[Config]:
@@ -324,7 +357,7 @@ def configurations(rows: Sequence[Result]) -> list[Config]:
                 label,
                 est,
                 statistics.fmean(r.error for r in rs),
-                statistics.fmean(r.cost_us for r in rs),
+                statistics.fmean(r.cost_us / r.dt / 1000.0 for r in rs),
             )
         )
     return out
@@ -357,17 +390,17 @@ def accuracy_figure(rows: Sequence[Result], path: Path) -> list[Config]:
     import matplotlib.pyplot as plt
 
     configs = configurations(rows)
-    front = pareto([(c.cost_us, c.error) for c in configs])
+    front = pareto([(c.cost_ms, c.error) for c in configs])
     fig, axes = plt.subplots(1, 3, figsize=(16, 5))
     ax = axes[0]
     colours = {"reverse": "tab:blue", "contact": "tab:orange", "finite-difference": "tab:green"}
     for est, colour in colours.items():
         pts = [c for c in configs if c.estimator == est]
         ax.scatter(
-            [c.cost_us for c in pts], [c.error for c in pts], s=12, alpha=0.6, c=colour, label=est
+            [c.cost_ms for c in pts], [c.error for c in pts], s=12, alpha=0.6, c=colour, label=est
         )
     ax.plot(
-        [configs[i].cost_us for i in front],
+        [configs[i].cost_ms for i in front],
         [configs[i].error for i in front],
         "k-o",
         ms=4,
@@ -377,7 +410,7 @@ def accuracy_figure(rows: Sequence[Result], path: Path) -> list[Config]:
     ax.set(
         xscale="log",
         yscale="log",
-        xlabel="cost, µs per step (sim + reading + filter)",
+        xlabel="cost, ms of computing per simulated second",
         ylabel="mean relative error over scenes",
         title="Accuracy against cost",
     )
@@ -419,13 +452,63 @@ def _dt_text(dt: float) -> str:
     return "none of the swept steps" if not math.isfinite(dt) else f"{_dt_label(dt)} s"
 
 
+def _estimator_text(rows: Sequence[Result], f: Findings) -> str:
+    rev, con = _pick(rows, BASE), _pick(rows, BASE, "contact")
+    shared = [sc for sc in con if sc in rev and rev[sc].error > 0]
+    worst = max((abs(con[sc].error - rev[sc].error) for sc in shared), default=math.nan)
+    return (
+        f"Reverse integration and the arbiter-impulse sum agree on every contact scene (largest "
+        f"difference in relative error {worst:.1g}); the arbiter sum cannot see a joint, so it is "
+        f"not run on the grip. Finite differences of positions are a median "
+        f"{f.fd_over_reverse:.1f}× less accurate than reverse integration on the scenes where "
+        f"either errs (they read the step before: a one-step lag), for the same cost."
+    )
+
+
+def _filter_text(rows: Sequence[Result]) -> str:
+    none = _pick(rows, BASE)
+    if "stack" not in none or "hover" not in none:
+        return ""
+    options = [(name, _pick(rows, BASE, "reverse", name)) for name in FILTERS if name != "none"]
+    options = [(n, p) for n, p in options if "stack" in p and "hover" in p]
+    if not options:
+        return ""
+    calm_name, calm = min(options, key=lambda o: o[1]["stack"].jitter)
+    quick_name, quick = min(options, key=lambda o: o[1]["hover"].error)
+    return (
+        f"Where the raw reading is noisy (the stack) the steadiest, {calm_name}, takes the jitter "
+        f"from {_pct(none['stack'].jitter)} to {_pct(calm['stack'].jitter)}, but lags a ramp by "
+        f"{1000 * calm['stack'].lag:.0f} ms and lifts the hover's error from "
+        f"{_pct(none['hover'].error)} to {_pct(calm['hover'].error)}. The quickest, {quick_name} "
+        f"({1000 * quick['hover'].lag:.0f} ms), keeps the hover at "
+        f"{_pct(quick['hover'].error)} and the stack's jitter at {_pct(quick['stack'].jitter)}. "
+        f"On static scenes reverse integration has no jitter to remove: a filter pays only where "
+        f"something downstream needs a steady signal (perceived gravity), never for accuracy."
+    )
+
+
 def accuracy_doc(rows: Sequence[Result], front: Sequence[Config], seconds: float) -> str:
     """docs/accuracy.md: definitions, where each knob stops paying, the tables, the figure."""
     f = findings(rows)
     per_scene = ", ".join(f"{s} {_dt_text(dt)}" for s, dt in f.dt_1pct.items())
     stack = ", ".join(f"{i}: {_pct(e)}" for i, e in f.stack_errors)
     hover = ", ".join(f"{_dt_label(dt)}: {_pct(e)}" for dt, e in f.hover_errors)
-    front_lines = "\n".join(f"| {c.label} | {_pct(c.error)} | {c.cost_us:.0f} |" for c in front)
+    stack_plateau = (
+        f"it still falls at {f.stack_errors[-1][0]} iterations (no plateau in the sweep)"
+        if f.stack_errors and f.stack_iterations == f.stack_errors[-1][0]
+        else f"past {f.stack_iterations} iterations another step lowers it by less than 10 %"
+    )
+    plateaus = ", ".join(f"{sc} {n}" for sc, n in f.plateau.items() if sc != "stack")
+    if f.substep_hover[0] > f.substep_hover[1]:
+        substep_verdict = (
+            "Substeps refine the contacts, but the controller (and every hook) still acts once "
+            "per frame, so at the same inner step a smaller dt is the more accurate of the two."
+        )
+    else:
+        substep_verdict = "At the same inner step, substeps are as accurate as a smaller dt."
+    estimators = _estimator_text(rows, f)
+    filters = _filter_text(rows)
+    front_lines = "\n".join(f"| {c.label} | {_pct(c.error)} | {c.cost_ms:.0f} |" for c in front)
     return f"""# What accuracy costs
 
 Generated by `{COMMAND}` ({len(rows)} rows, {seconds:.0f} s on this machine); the full table is
@@ -436,27 +519,26 @@ on this page and the figure.
 
 ## Where each knob stops paying
 
-- **Solver iterations (stack of four 200 kg crates on a 70 kg player, dt = 1/120 s).** The
-  ground-contact error by iterations is {stack}. It first drops under 1 % at
-  **{f.stack_iterations_1pct} iterations**; past **{f.stack_iterations} iterations** another
-  step up the ladder lowers it by less than 10 %.
-- **dt (hover spring, 2 Hz, ζ = 0.3).** The support-force error by dt is {hover}. It is under
-  1 % for **dt ≤ {_dt_text(f.hover_dt)}**. Per scene, the largest dt with error under 1 % (and
-  every smaller one too): {per_scene}.
+- **Solver iterations.** The stack (four 200 kg crates on a 70 kg player, dt = 1/120 s) is the
+  scene that needs them: its ground-contact error by iterations is {stack}. It is under 1 % from
+  **{f.stack_iterations_1pct} iterations** and under 0.1 % from **{f.stack_iterations_01pct}**;
+  {stack_plateau}. The other scenes stop paying much earlier (iterations past which the error
+  falls by less than 10 %): {plateaus}.
+- **dt.** The hover spring's (2 Hz, ζ = 0.3) support-force error by dt is {hover}: first order,
+  it halves with dt. It is under 1 % for **dt ≤ {_dt_text(f.hover_dt)}** of the swept steps
+  (the 1 % crossing, interpolated: dt ≈ {_dt_text(f.hover_dt_interpolated)}). Per scene, the
+  largest swept dt with error under 1 % (and every smaller one too): {per_scene}.
 - **Substeps.** At dt = 1/30 s with 4 substeps the hover error is {_pct(f.substep_hover[0])}
-  at {f.substep_cost[0]:.0f} µs/step; a plain dt = 1/120 s gives {_pct(f.substep_hover[1])} at
-  {f.substep_cost[1]:.0f} µs/step (per frame of 1/120 s). Substeps buy integration accuracy but
-  the controller still acts once per frame, so the smaller dt wins at equal inner step.
-- **Force estimator.** Reverse integration and the arbiter-impulse sum agree to round-off on
-  every contact scene (the arbiter sum cannot see the grip's joint, so it is not run there);
-  finite differences of positions are a median {f.fd_over_reverse:.1f}× less accurate (they
-  read one step late) and cost about the same.
-- **Filters** trade jitter for lag (table below): on a static scene the raw reverse-integration
-  reading has no jitter to remove, so a filter only adds error on moving scenes (hover, ring);
-  it earns its lag where the raw signal is noisy (stack at few iterations, landings).
+  for {f.substep_cost[0]:.0f} ms of computing per simulated second; a plain dt = 1/120 s gives
+  {_pct(f.substep_hover[1])} for {f.substep_cost[1]:.0f} ms. {substep_verdict}
+- **Force estimator.** {estimators}
+- **Filters** trade jitter for lag (table below). {filters}
 - **Cost.** At the base knobs the world with one tracked body costs a median
-  {f.reverse_us:.0f} µs per step against {f.bare_us:.1f} µs for bare pymunk stepping the same
-  bodies: the reading is dominated by the solver's fixed numpy cost per step, not by the bodies.
+  {f.reverse_us:.0f} µs per step against {f.bare_us:.1f} µs for bare pymunk stepping a copy of
+  the same space: with a body or two, the price of a reading is the solver's fixed numpy cost per
+  step, not the bodies (see the overhead section for how it grows). Costs were measured with
+  other work running on the machine; the ratio to bare pymunk, timed in interleaved blocks, is
+  the number to compare across runs.
 
 ## Definitions
 
@@ -478,7 +560,7 @@ unchanged: `sweep(plan(), executor=distributed.Client(...).get_executor())`.
 
 ## Pareto front (mean over scenes)
 
-| configuration | mean error | µs/step |
+| configuration | mean error | ms per simulated s |
 |---|---|---|
 {front_lines}
 
