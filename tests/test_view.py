@@ -332,3 +332,14 @@ def test_restart_and_level_cycle_start_fresh_sessions() -> None:
     assert app.world.steps == 0
     app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_PERIOD))
     assert app.world.steps == 1
+
+
+def test_play_with_an_unreachable_display_says_so(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """DISPLAY set but SDL can only open an invisible driver: exit 2 with --headless suggested,
+    never an interactive loop nobody can see or quit."""
+    monkeypatch.setenv("DISPLAY", ":99")
+    monkeypatch.delenv("SDL_VIDEODRIVER", raising=False)
+    assert play("rest") == 2
+    assert "--headless" in capsys.readouterr().err

@@ -57,6 +57,7 @@ MAX_STEPS_PER_FRAME = 32  # physics steps run at most per frame; beyond that the
 SPEEDS = (0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0)  # slow motion … fast forward, × real time
 HEADLESS_FRAME = 1.0 / 60.0  # s of wall time a headless frame stands for
 ZOOM_STEP = 1.25  # zoom factor per key press or wheel notch
+MAX_FPS = 240  # Hz: drawing is capped here when the display does not sync to its refresh
 
 
 @dataclass(slots=True)
@@ -546,10 +547,12 @@ class App:
     def run_window(self, window: pygame.Surface) -> None:
         """The interactive loop: events, physics by wall clock, draw, flip."""
         clock = time.perf_counter
+        limiter = pygame.time.Clock()
         last = clock()
         while self.running:
             for event in pygame.event.get():
                 self.handle(event)
+            limiter.tick(MAX_FPS)
             now = clock()
             self.frame(min(now - last, 0.25))
             last = now

@@ -136,15 +136,8 @@ def play(
         app = App(show_level, level, levels=names, size=size)
         app.run_frames(120 if frames is None else frames)
     else:
-        pygame.display.init()
-        pygame.font.init()
-        try:
-            window = pygame.display.set_mode(size)
-        except pygame.error as exc:
-            print(
-                f"playground play: cannot open a window ({exc}); use --headless.",
-                file=sys.stderr,
-            )
+        window = _open_window(size)
+        if window is None:
             return 2
         pygame.display.set_caption("playground")
         app = App(show_level, level, levels=names, size=size)
@@ -160,6 +153,29 @@ def play(
             replays[-1].save(replay_out)
     pygame.quit()
     return 0
+
+
+def _open_window(size: tuple[int, int]) -> pygame.Surface | None:
+    """A window synced to the display if it can be (None, with a message, if none opens)."""
+    try:
+        pygame.display.init()
+        driver = pygame.display.get_driver()
+        if driver in ("offscreen", "dummy"):
+            # SDL falls back to an invisible driver when the display cannot be reached.
+            print(
+                f"playground play: no display could be opened (SDL chose {driver!r}); "
+                "use --headless.",
+                file=sys.stderr,
+            )
+            return None
+        pygame.font.init()
+        try:
+            return pygame.display.set_mode(size, vsync=1)
+        except pygame.error:
+            return pygame.display.set_mode(size)
+    except pygame.error as exc:
+        print(f"playground play: cannot open a window ({exc}); use --headless.", file=sys.stderr)
+        return None
 
 
 def run_play(args: Any) -> int:
