@@ -146,3 +146,30 @@ def test_drawing_leaves_the_recording_unchanged(tmp_path: Path) -> None:
     view_csv = (tmp_path / "view.csv").read_text()
     assert view_csv.count("\n") > steps
     assert view_csv == (tmp_path / "plain.csv").read_text()
+
+
+TOL_UP_ON_SCREEN = 0.05  # rad: the roll lags its target by a first-order filter of 0.3 s
+
+
+@pytest.mark.skipif("gravity_flip" not in LEVELS, reason="gravity_flip is not shipped")
+def test_rolling_camera_keeps_perceived_up_at_the_top() -> None:
+    """Law: with camera roll on, once the player has settled after a gravity flip, its perceived
+    up points to the top of the screen (the world is drawn upside down)."""
+    app = App(show_level, "gravity_flip", size=SIZE)
+    app.roll = True
+    app.run_frames(240)
+    up = app.world.perceived_up("player")
+    sx, sy = app.camera.vector(up)
+    assert abs(np.arctan2(sx, -sy)) <= TOL_UP_ON_SCREEN
+    assert abs(abs(app.camera.roll) - np.pi) <= TOL_UP_ON_SCREEN
+
+
+@pytest.mark.skipif("null_enemy" not in LEVELS, reason="null_enemy is not shipped")
+def test_x_nullifies_the_nearest_enemy() -> None:
+    """X (one-shot) nullifies the gravity of the enemy nearest the player, as a recorded intent."""
+    app = App(show_level, "null_enemy", size=SIZE)
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_x))
+    app.run_frames(3)
+    assert app.world.gravity_rule("enemy").scale == 0.0
+    replay = app.replays()[-1]
+    assert [i.nullify for _, i in replay.changes].count("enemy") == 1
