@@ -491,7 +491,8 @@ class World:
         if self._registry_dirty:
             self._refresh_registry()
         g_space = self._space_gravity(self.time)
-        self.space.gravity = g_space
+        if self.space.gravity != g_space:
+            self.space.gravity = g_space  # setting it wakes every body: only when it changes
         if self._field.uniform:
             # Only bodies with their own rule need a correction force: m·(g_rule − g_space).
             for body_id, rule in self._rules.items():
@@ -561,7 +562,13 @@ class World:
             by_id = {b.id: b for b in self.space.bodies}
             for body_id, row in zip(self._rows.ids, self._rows.state, strict=True):
                 body = by_id.get(int(body_id))
-                if body is not None and body.body_type == pymunk.Body.DYNAMIC:
+                # Setting a force wakes a body and restarts its idle clock: write only non-zero
+                # forces (pymunk cleared the rest after the last substep).
+                if (
+                    body is not None
+                    and body.body_type == pymunk.Body.DYNAMIC
+                    and (row[3] != 0.0 or row[4] != 0.0 or row[5] != 0.0)
+                ):
                     body.force = (row[3], row[4])
                     body.torque = row[5]
         else:
