@@ -221,6 +221,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--frames", type=int, metavar="N", help="run N frames of 1/60 s, then exit")
     p.add_argument("--screenshot", metavar="PNG", help="save the last frame")
     p.add_argument("--replay-out", metavar="FILE", help="write the session's inputs as a replay")
+    p.add_argument("--replay", metavar="FILE", help="watch a replay instead of playing")
     p.set_defaults(func=cmd_play)
 
     p = sub.add_parser("schema", help="print the level JSON Schema")

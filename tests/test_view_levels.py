@@ -173,3 +173,35 @@ def test_x_nullifies_the_nearest_enemy() -> None:
     assert app.world.gravity_rule("enemy").scale == 0.0
     replay = app.replays()[-1]
     assert [i.nullify for _, i in replay.changes].count("enemy") == 1
+
+
+def test_cli_run_replay_ends_where_the_interactive_run_ended(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Law: ``playground run LEVEL --replay FILE --json`` reports exactly the player's final
+    position and velocity of the interactive session that recorded FILE (JSON floats round-trip
+    exactly); ``playground play --replay`` shows it headless."""
+    import json
+
+    from playground.cli import main
+
+    level = _player_level()
+    app = App(show_level, level, size=SIZE)
+    for frame in range(90):
+        for at, kind, key in KEYS:
+            if at == frame:
+                app.handle(pygame.event.Event(kind, key=key))
+        app.frame(1.0 / 60.0)
+    path = tmp_path / "session.json"
+    app.replays()[-1].save(path)
+    capsys.readouterr()
+    assert main(["run", level, "--replay", str(path), "--json"]) in (0, 1)
+    report = json.loads(capsys.readouterr().out)
+    body = app.world.body("player")
+    assert report["steps"] == app.world.steps
+    assert report["bodies"]["player"]["position"] == list(body.position)
+    assert report["bodies"]["player"]["velocity"] == list(body.velocity)
+    shot = tmp_path / "shot.png"
+    args = ["play", level, "--headless", "--frames", "3", "--replay", str(path)]
+    assert main([*args, "--screenshot", str(shot)]) == 0
+    assert shot.exists()

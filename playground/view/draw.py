@@ -208,9 +208,19 @@ def draw_world(
         for c in world.space.constraints:
             a = _anchor(c, "a")
             b = _anchor(c, "b")
+            if isinstance(c, pymunk.GrooveJoint):
+                g0, g1 = c.a.local_to_world(c.groove_a), c.a.local_to_world(c.groove_b)
+                pygame.draw.line(
+                    surf,
+                    COLOURS["joint"],
+                    _clamp(cam.to_screen((g0.x, g0.y))),
+                    _clamp(cam.to_screen((g1.x, g1.y))),
+                    2,
+                )
+                a = b  # the anchor slides along the groove: draw the groove and the anchor
             if a is None or b is None:
-                pa, pb = c.a.position, c.b.position
-                a, b = (pa.x, pa.y), (pb.x, pb.y)
+                # Rotary joints, gears and motors have no anchor points to draw.
+                continue
             sa = _clamp(cam.to_screen(a))
             sb = _clamp(cam.to_screen(b))
             pygame.draw.line(surf, COLOURS["joint"], sa, sb, 2)

@@ -108,13 +108,15 @@ def play(
     frames: int | None = None,
     screenshot: str | None = None,
     replay_out: str | None = None,
+    replay: str | None = None,
     size: tuple[int, int] = WINDOW,
 ) -> int:
     """``playground play``: open ``level`` in a window (or off screen); returns an exit code.
 
     Without a display and without ``headless`` it says so and returns 2. Headless runs
-    ``frames`` frames (default 120) of 1/60 s each and saves ``screenshot`` if given. On exit the
-    player's inputs since the last (re)start are written to ``replay_out`` if given.
+    ``frames`` frames (default 120) of 1/60 s each and saves ``screenshot`` if given. ``replay``
+    (a file) drives the player instead of the keyboard. On exit the player's inputs since the last
+    (re)start are written to ``replay_out`` if given.
     """
     from playground.level import LevelError
 
@@ -127,20 +129,23 @@ def play(
         return 2
     names = level_names()
     try:
-        show_level(level)
-    except LevelError as exc:
+        show = show_level(level)
+        watch = Replay.load(replay) if replay is not None else None
+        if watch is not None:
+            attach_replay(show, watch)
+    except (LevelError, ReplayError) as exc:
         print(f"playground play: {exc}", file=sys.stderr)
         return 1
     if headless:
         init_headless()
-        app = App(show_level, level, levels=names, size=size)
+        app = App(show_level, level, levels=names, size=size, replay=watch)
         app.run_frames(120 if frames is None else frames)
     else:
         window = _open_window(size)
         if window is None:
             return 2
         pygame.display.set_caption("playground")
-        app = App(show_level, level, levels=names, size=size)
+        app = App(show_level, level, levels=names, size=size, replay=watch)
         if frames is not None:
             app.run_frames(frames)
         else:
@@ -151,7 +156,8 @@ def play(
         replays = app.replays()
         if replays:
             replays[-1].save(replay_out)
-    pygame.quit()
+    if not headless:
+        pygame.display.quit()
     return 0
 
 
@@ -190,4 +196,5 @@ def run_play(args: Any) -> int:
         frames=args.frames,
         screenshot=args.screenshot,
         replay_out=args.replay_out,
+        replay=args.replay,
     )
