@@ -205,3 +205,28 @@ def test_cli_run_replay_ends_where_the_interactive_run_ended(
     args = ["play", level, "--headless", "--frames", "3", "--replay", str(path)]
     assert main([*args, "--screenshot", str(shot)]) == 0
     assert shot.exists()
+
+
+def test_replay_as_level_inputs_reproduces_the_session() -> None:
+    """Law: a session's replay turned into ``[[inputs]]`` and appended to the level file gives a
+    level whose own scripted run (no view, no replay) ends in exactly the session's state — a bug
+    found by hand becomes a level test."""
+    from playground.level import find, loads
+    from playground.scene import build
+
+    level = "rest"
+    if level not in LEVELS:
+        pytest.skip("rest is not shipped")
+    app = App(show_level, level, size=SIZE)
+    for frame in range(120):
+        for at, kind, key in KEYS:
+            if at == frame:
+                app.handle(pygame.event.Event(kind, key=key))
+        app.frame(1.0 / 60.0)
+    replay = app.replays()[-1]
+    text = find(level).read_text(encoding="utf-8") + "\n" + replay.to_inputs()
+    scene = build(loads(text, "rest+replay"))
+    for _ in range(replay.steps):
+        scene.world.step()
+    show = Show(name=level, world=scene.world, title="")
+    assert state(show) == state(app.session.show)

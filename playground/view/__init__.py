@@ -1,7 +1,8 @@
 """The desktop view (pygame-ce): the only part of playground that imports pygame.
 
-``playground play [LEVEL]`` opens it; :func:`playground.view.headless.render_level` draws off
-screen. The camera, drawing, HUD, app loop and replays each have their own module.
+``playground play [LEVEL]`` opens it (``--headless`` draws off screen; see
+:mod:`playground.view.launcher`). The camera, drawing, HUD, app loop and replays each have their own
+module: ``camera``, ``draw``, ``hud``, ``app``, ``replay``.
 """
 
 import os
