@@ -66,7 +66,10 @@ def run(args: argparse.Namespace) -> int:
         t1 = time.perf_counter()
         over = overhead.profile(quick=args.quick)
         t2 = time.perf_counter()
-        for path in report.write_docs(rows, over, args.dir, seconds=(t1 - t0, t2 - t1)):
+        fixed = overhead.fixed_cost()
+        for path in report.write_docs(
+            rows, over, args.dir, seconds=(t1 - t0, t2 - t1), fixed=fixed
+        ):
             print(f"wrote {path}", file=sys.stderr)
         return 0
     if args.bench == "accuracy":

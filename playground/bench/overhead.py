@@ -32,6 +32,7 @@ __all__ = [
     "NO_EFFECT_BUDGET",
     "SIZES",
     "OverheadRow",
+    "fixed_cost",
     "overhead_figure",
     "overhead_markdown",
     "profile",
@@ -155,8 +156,10 @@ class OverheadRow:
     Attributes:
         bodies: boxes in the pile.  effect: a key of :data:`EFFECTS`.
         us_per_step: the world, µs per step.  bare_us: bare pymunk, µs per step.
-        ratio: world / bare, the median over adjacent pairs of timed blocks.
-        marginal_us: us_per_step − the "none" world's at the same size, µs.
+        ratio: world / bare, the median over adjacent pairs of timed blocks (robust to load).
+        us_per_step: ratio × bare_us, µs (consistent with the ratio).
+        bare_us: median over every effect's bare blocks at this size, µs per step.
+        marginal_us: (ratio − the "none" ratio) × bare_us: what the effect adds, µs per step.
         events_us … filter_us: mean µs per step of each stage (0 when it did not run).
     """
 
@@ -232,7 +235,7 @@ def profile(
         repeats = min(repeats, 2)
     rows: list[OverheadRow] = []
     for n in sizes:
-        none_us = math.nan
+        at_n: list[OverheadRow] = []
         for effect in effects:
             config = WorldConfig(contact_split=effect.startswith("contact split"))
             world = _world(n, config)
@@ -245,16 +248,14 @@ def profile(
                 bare.step(config.dt)
             us, bare_us, ratio = _time_blocks(world, bare, repeats)
             stages = _stage_means(world, max(3, min(50, round(0.02 / (us * 1e-6)))))
-            if effect == "none":
-                none_us = us
-            rows.append(
+            at_n.append(
                 OverheadRow(
                     bodies=n,
                     effect=effect,
                     us_per_step=us,
                     bare_us=bare_us,
                     ratio=ratio,
-                    marginal_us=us - none_us if math.isfinite(none_us) else math.nan,
+                    marginal_us=math.nan,
                     events_us=stages[Stage.EVENTS],
                     gravity_us=stages[Stage.GRAVITY],
                     movers_us=stages[Stage.MOVERS],
@@ -264,7 +265,37 @@ def profile(
                     filter_us=stages[Stage.FILTER],
                 )
             )
+        bare_ref = statistics.median(r.bare_us for r in at_n)
+        none = next((r.ratio for r in at_n if r.effect == "none"), math.nan)
+        rows += [
+            replace(
+                r,
+                bare_us=bare_ref,
+                us_per_step=r.ratio * bare_ref,
+                marginal_us=(r.ratio - none) * bare_ref,
+            )
+            for r in at_n
+        ]
     return rows
+
+
+def fixed_cost(repeats: int = 9, steps: int = 2000) -> tuple[float, float]:
+    """(world, bare pymunk) µs per step for a scene with nothing but a static floor: the fixed
+    Python cost of the world's step, medians over interleaved blocks."""
+    config = WorldConfig()
+    world = _world(0, config)
+    bare = _bare(0, config)
+    ours, theirs = [], []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for _ in range(steps):
+            world.step()
+        ours.append((time.perf_counter() - t0) / steps)
+        t0 = time.perf_counter()
+        for _ in range(steps):
+            bare.step(config.dt)
+        theirs.append((time.perf_counter() - t0) / steps)
+    return 1e6 * statistics.median(ours), 1e6 * statistics.median(theirs)
 
 
 def _table(header: Sequence[str], body: Sequence[Sequence[str]]) -> str:

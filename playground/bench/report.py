@@ -569,11 +569,12 @@ unchanged: `sweep(plan(), executor=distributed.Client(...).get_executor())`.
 {accuracy_markdown(rows)}"""
 
 
-def overhead_doc(rows: Sequence[OverheadRow], seconds: float) -> str:
+def overhead_doc(
+    rows: Sequence[OverheadRow], seconds: float, fixed: tuple[float, float] = (math.nan, math.nan)
+) -> str:
     """The overhead section of docs/accuracy.md: the no-effect check and each effect's cost."""
     none = sorted((r for r in rows if r.effect == "none"), key=lambda r: r.bodies)
     within = [r.bodies for r in none if r.ratio <= NO_EFFECT_BUDGET]
-    fixed = statistics.median(r.us_per_step - r.bare_us for r in none) if none else math.nan
     ratios = ", ".join(f"{r.bodies}: ×{r.ratio:.2f}" for r in none)
     first = next(
         (
@@ -596,11 +597,15 @@ A pile of 1 kg boxes resting on a floor, in a `World` with one effect switched o
 process ({seconds:.0f} s on this machine; rows in [accuracy_overhead.csv](accuracy_overhead.csv)).
 
 **No effect against bare pymunk** (world µs / bare µs per step, by bodies): {ratios} — {verdict}
-(sizes within budget: {", ".join(map(str, within)) or "none"}). The world's step adds a fixed
-≈ {fixed:.0f} µs of Python per step whatever the body count (checking which stages the scene
-needs, flushing an empty force ledger, advancing time); with uniform gravity and nothing tracked
-it adds nothing per body. Below a few dozen bodies pymunk's own step is so cheap that this fixed
-cost is more than 5 % of it.
+(sizes within budget: {", ".join(map(str, within)) or "none"}). Why not below: with nothing
+but a floor, a world step costs {fixed[0]:.1f} µs against {fixed[1]:.1f} µs for `space.step`,
+a fixed {fixed[0] - fixed[1]:.1f} µs of Python per step whatever the body count (`World.step`
+looks up four hook lists in a dict keyed by the `Stage` enum, whose `__hash__` is Python code,
+≈ 0.2 µs each; checks which stages the scene needs; calls the physics stage through `_run`;
+flushes and clears an empty force ledger; advances time). With uniform gravity and nothing
+tracked it adds nothing per body, so the ratio falls as pymunk's own cost grows; below a few
+hundred boxes that fixed cost is more than 5 % of pymunk's step. The rows are medians of
+interleaved blocks on a shared machine: read ratios within ±10 % as noise.
 
 ![marginal cost of each effect against bodies; the no-effect ratio](img/accuracy_overhead.png)
 
@@ -613,10 +618,12 @@ def write_docs(
     out: Path,
     *,
     seconds: tuple[float, float],
+    fixed: tuple[float, float] = (math.nan, math.nan),
 ) -> list[Path]:
     """Write accuracy.md with its CSV and JSON files and figures under ``out`` (img/ beside).
 
-    ``seconds``: wall time of the sweep and of the overhead profile, quoted in the page.
+    ``seconds``: wall time of the sweep and of the overhead profile, quoted in the page;
+    ``fixed``: :func:`~playground.bench.overhead.fixed_cost`.
     """
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -627,7 +634,7 @@ def write_docs(
     front = accuracy_figure(rows, out / "img" / "accuracy.png")
     overhead_figure(over, out / "img" / "accuracy_overhead.png")
     written += [out / "img" / "accuracy.png", out / "img" / "accuracy_overhead.png"]
-    text = accuracy_doc(rows, front, seconds[0]) + overhead_doc(over, seconds[1])
+    text = accuracy_doc(rows, front, seconds[0]) + overhead_doc(over, seconds[1], fixed)
     (out / "accuracy.md").write_text(text, encoding="utf-8")
     written.append(out / "accuracy.md")
     return written
