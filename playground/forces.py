@@ -318,13 +318,22 @@ class ForceSolver:
         j = data[:, 0:2]
         n = data[:, 2:4]
         jn = n * np.einsum("ij,ij->i", j, n)[:, None]
+        rows, vals = [], []
         for col, sign in ((0, 1.0), (1, -1.0)):  # body A received +J, body B −J
             hit = lookup(self._keys, pairs[:, col])
             arb = np.nonzero(hit >= 0)[0]
-            if len(arb):
-                idx = self._key_row[hit[arb]]
-                np.add.at(self._contact_j, idx, sign * j[arb])
-                np.add.at(self._contact_jn, idx, sign * jn[arb])
+            rows.append(self._key_row[hit[arb]])
+            vals.append(sign * np.hstack([j[arb], jn[arb]]))
+        idx = np.concatenate(rows)
+        if len(idx) == 0:
+            return
+        v = np.vstack(vals)
+        # Chipmunk's arbiter order (and which body is A) follows memory addresses, which differ
+        # between runs: sum each body's impulses in an order set by their values, so that two
+        # builds of a scene give bit-identical sums.
+        order = np.lexsort((v[:, 3], v[:, 2], v[:, 1], v[:, 0], idx))
+        np.add.at(self._contact_j, idx[order], v[order, 0:2])
+        np.add.at(self._contact_jn, idx[order], v[order, 2:4])
 
     def finish(
         self,

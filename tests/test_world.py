@@ -1,0 +1,198 @@
+"""Laws of the world: configuration, stages and their timings, names, mass changes, perceived
+gravity, and a core that never imports the renderer."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import pymunk
+import pytest
+
+from playground import (
+    Perception,
+    RotatingRoom,
+    Spin,
+    Stage,
+    Turn,
+    Uniform,
+    World,
+    WorldConfig,
+)
+
+G = 9.81
+
+TOL_SETTLED_REL = 1e-6
+"""A settled contact's support matches m·g to < 1e-6 once at rest (see tests/test_forces.py)."""
+
+TOL_PERCEIVED_REL = 1e-3
+"""Perceived gravity is 1€-filtered (min cutoff 2 Hz, time constant 80 ms): after 1.5 s at rest
+the filter has converged to far below 1e-3 of |g|."""
+
+FREE_FALL_MAX = 1e-6
+"""m/s²: in free fall the engine does nothing, so the specific force is rounding only."""
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [
+        ("dt", 0.0),
+        ("dt", -0.01),
+        ("dt", math.nan),
+        ("substeps", 0),
+        ("substeps", 1.5),
+        ("iterations", 0),
+        ("damping", 0.0),
+        ("damping", 1.5),
+        ("damping", math.nan),
+        ("collision_slop", -0.1),
+        ("sleep_time", 0.0),
+    ],
+)
+def test_config_rejects_bad_values(field: str, value: float) -> None:
+    """Law: a bad setting raises ValueError naming the field."""
+    with pytest.raises(ValueError, match=field):
+        WorldConfig(**{field: value})  # type: ignore[arg-type]
+
+
+def resting_world(config: WorldConfig | None = None, mass: float = 3.0) -> World:
+    world = World(config or WorldConfig())
+    world.add_static_segment((-10.0, 0.0), (10.0, 0.0))
+    world.add_box("box", mass=mass, size=(1.0, 1.0), position=(0.0, 0.55))
+    return world
+
+
+def test_stage_timings_are_per_stage_and_unneeded_stages_do_not_run() -> None:
+    """Law: with timing on, each stage that runs counts one call per step with a positive time;
+    a stage the scene does not need (no hooks, no events, uniform gravity, no movers, no tracked
+    body, no perceiver) is never run."""
+    world = resting_world(WorldConfig(timing=True))
+    world.run(0.25)
+    n = world.steps
+    t = world.timings
+    assert t[Stage.PHYSICS].calls == n and t[Stage.PHYSICS].total > 0.0
+    assert t[Stage.PHYSICS].mean == pytest.approx(t[Stage.PHYSICS].total / n)
+    for stage in Stage:
+        if stage is not Stage.PHYSICS:
+            assert t[stage].calls == 0, stage
+    world.track("box", perceive=False)
+    world.run(0.25)
+    assert t[Stage.FORCES].calls == world.steps - n
+    assert t[Stage.FILTER].calls == 0
+    world.track("box")
+    plat = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    world.add("plat", plat)
+    world.add_mover("plat", Spin(position=(5.0, 5.0)))
+    world.on(Stage.CONTROL, lambda w: None)
+    world.at(world.time + 0.05, lambda w: None)
+    m = world.steps
+    world.run(0.25)
+    for stage in (Stage.FILTER, Stage.MOVERS, Stage.CONTROL):
+        assert t[stage].calls == world.steps - m, stage
+    assert t[Stage.EVENTS].calls == 1
+    assert t[Stage.GRAVITY].calls == 0
+
+
+def test_timing_off_records_nothing() -> None:
+    """Law: timing is off by default and then no stage records a call."""
+    world = resting_world()
+    world.track("box")
+    world.run(0.1)
+    assert all(timing.calls == 0 for timing in world.timings.values())
+
+
+def test_names_and_remove() -> None:
+    """Law: names are unique; an unknown name's error lists the known ones; a removed body is gone
+    (its shapes too) and the other tracked rows keep reading their own bodies."""
+    world = resting_world()
+    world.add_box("other", mass=1.0, size=(0.5, 0.5), position=(3.0, 0.3))
+    with pytest.raises(ValueError, match="box"):
+        world.add_box("box", mass=1.0, size=(1.0, 1.0), position=(0.0, 3.0))
+    with pytest.raises(KeyError, match="known: box, other"):
+        world.body("nope")
+    world.track("box", "other")
+    world.run(0.5)
+    world.remove("box")
+    assert world.names == ["other"]
+    assert all(s.body is not None and s.body.space is not None for s in world.space.shapes)
+    with pytest.raises(KeyError):
+        world.forces("box")
+    world.run(0.5)
+    f = world.forces("other")
+    assert abs(f.support[1] - 1.0 * G) <= TOL_SETTLED_REL * G
+
+
+def test_set_mass_is_followed_by_the_solver() -> None:
+    """Law: after a mass change the support settles to the new m·g (the solver uses the new m)."""
+    world = resting_world(mass=3.0)
+    world.track("box")
+    world.run(1.0)
+    world.set_mass("box", 7.0)
+    world.run(1.0)
+    f = world.forces("box")
+    assert abs(f.support[1] - 7.0 * G) <= TOL_SETTLED_REL * 7.0 * G
+    assert f.specific[1] == pytest.approx(G, rel=TOL_SETTLED_REL)
+    with pytest.raises(ValueError, match="mass"):
+        world.set_mass("box", 0.0)
+
+
+def test_perceived_gravity_at_rest_is_gravity() -> None:
+    """Law: a body at rest perceives the real gravity, and "up" points against it."""
+    world = resting_world()
+    world.track("box")
+    world.run(1.5)
+    gx, gy = world.perceived_gravity("box")
+    assert abs(gx) <= TOL_PERCEIVED_REL * G and abs(gy + G) <= TOL_PERCEIVED_REL * G
+    assert world.perceived_up("box") == pytest.approx((0.0, 1.0), abs=TOL_PERCEIVED_REL)
+
+
+def test_free_fall_feels_nothing() -> None:
+    """Law: in free fall the specific force is zero, so the perceived gravity decays to ~0."""
+    world = World(WorldConfig())
+    world.add_box("box", mass=2.0, size=(1.0, 1.0), position=(0.0, 100.0))
+    world.track("box")
+    for _ in range(120):
+        world.step()
+        assert math.hypot(*world.forces("box").specific) <= FREE_FALL_MAX
+    assert math.hypot(*world.perceived_gravity("box")) <= FREE_FALL_MAX
+    up = world.perceived_up("box")
+    assert math.isfinite(up[0]) and math.hypot(*up) == pytest.approx(1.0)
+
+
+def test_gravity_flip_never_loses_up() -> None:
+    """Law: through a 180° gravity flip (the perceived gravity passes through zero), "up" is
+    always a finite unit vector, held below the threshold; after landing on the old ceiling it
+    points the new way."""
+    room = RotatingRoom(angle=-math.pi / 2, turns=(Turn(1.0, math.pi),))
+    world = World(WorldConfig(perception=Perception(up_threshold=1.0)), gravity=room)
+    world.add_static_segment((-3.0, 0.0), (3.0, 0.0))
+    world.add_static_segment((-3.0, 3.0), (3.0, 3.0))
+    world.add_box("box", mass=1.0, size=(0.5, 0.5), position=(0.0, 0.3))
+    world.track("box")
+    ups = []
+    for _ in range(round(4.0 / world.config.dt)):
+        world.step()
+        up = world.perceived_up("box")
+        assert all(math.isfinite(c) for c in up)
+        assert math.hypot(*up) == pytest.approx(1.0, abs=1e-12)
+        ups.append(up)
+    assert ups[100][1] == pytest.approx(1.0, abs=1e-3)
+    assert ups[-1][1] == pytest.approx(-1.0, abs=1e-3)
+
+
+def test_gravity_setter_accepts_a_vector() -> None:
+    """Law: a plain (gx, gy) becomes a Uniform field; a non-finite one is refused."""
+    world = World()
+    world.gravity = (1.0, -2.0)
+    assert world.gravity == Uniform((1.0, -2.0))
+    assert world.space.gravity == (1.0, -2.0)
+    with pytest.raises(ValueError, match="gravity"):
+        world.gravity = (math.inf, 0.0)
+
+
+def test_import_does_not_load_pygame() -> None:
+    """Law: the core imports pymunk and numpy only; pygame stays out of ``import playground``."""
+    code = "import sys, playground; print('pygame' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False"
