@@ -168,9 +168,9 @@ class Hud:
         self._panel(surf, rect)
         raw, filt = scope.raw, scope.filtered
         label = self.small.render("|support| raw / filtered, N", True, DIM)
-        peak = max(float(raw.max()) if raw.size else 0.0, float(filt.max()) if filt.size else 0.0)
-        # A steady signal sits at mid-height; a spike still fits.
-        top = max(1.1 * peak, 2.0 * float(filt[-1]) if filt.size else 0.0)
+        # Scaled by the filtered signal (its peak at mid-height): raw impact spikes, often 20× the
+        # weight, are clipped at the top instead of flattening everything else.
+        top = 2.0 * float(filt.max()) if filt.size else 0.0
         top = top if top > 0.0 else 1.0
         surf.blit(self.small.render(f"{top:.0f} N", True, DIM), (rect.x + 4, rect.y + 2))
         surf.blit(label, (rect.right - label.get_width() - 4, rect.y + 2))
