@@ -177,6 +177,23 @@ def cmd_play(args: argparse.Namespace) -> int:
     return run_play(args)
 
 
+def cmd_figures(args: argparse.Namespace) -> int:
+    """Regenerate the teaching chapters' figures (docs/chapters) headless; needs matplotlib."""
+    from playground.figures import make_all
+
+    try:
+        paths = make_all(Path(args.out))
+    except ImportError as exc:
+        print(
+            f"playground figures: needs matplotlib: pip install 'playground[bench]' ({exc})",
+            file=sys.stderr,
+        )
+        return 2
+    for path in paths:
+        print(f"wrote {path}")
+    return 0
+
+
 def cmd_schema(args: argparse.Namespace) -> int:
     """Print the level JSON Schema, or write it to --output."""
     text = schema_text()
@@ -223,6 +240,10 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--replay-out", metavar="FILE", help="write the session's inputs as a replay")
     p.add_argument("--replay", metavar="FILE", help="watch a replay instead of playing")
     p.set_defaults(func=cmd_play)
+
+    p = sub.add_parser("figures", help="regenerate the teaching chapters' figures (headless)")
+    p.add_argument("--out", default="docs/img/chapters", metavar="DIR", help="default: %(default)s")
+    p.set_defaults(func=cmd_figures)
 
     p = sub.add_parser("schema", help="print the level JSON Schema")
     p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")

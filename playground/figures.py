@@ -1,0 +1,1006 @@
+"""The teaching chapters' figures and numbers (docs/chapters), made by the code itself.
+
+Every number a chapter quotes is a function in :data:`NUMBERS` (name → value, in the unit the text
+states) and every figure a function in :data:`FIGURES` (name → draws a PNG). The simulations behind
+them run once per process (cached) and headless; matplotlib is imported only when a figure is
+drawn (it is in the ``bench`` extra). ``playground figures`` regenerates every figure.
+
+>>> round(NUMBERS["ch5_k"](), 1)
+69087.6
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cache, partial
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+import pymunk
+from numpy.typing import NDArray
+
+from playground.controller import Controller, ControllerConfig, State
+from playground.filters import (
+    ExponentialMovingAverage,
+    Filter,
+    FilterChain,
+    Median3,
+    OneEuroFilter,
+)
+from playground.intents import Intent, Script
+from playground.movers import Spin, ring_room
+from playground.scene import Scene
+from playground.world import Stage, World, WorldConfig
+
+__all__ = ["FIGURES", "NUMBERS", "make_all"]
+
+Array = NDArray[np.float64]
+G = 9.81
+"""Standard gravity of the levels, m/s²."""
+
+DT = 1.0 / 120.0
+"""The levels' step, s."""
+
+
+def _scene(name: str, **settings: Any) -> Scene:
+    """Build a shipped level, optionally with some of its settings changed."""
+    from playground.level import find, load
+    from playground.scene import build
+
+    level = load(find(name))
+    if settings:
+        level = level.model_copy(update={"settings": level.settings.model_copy(update=settings)})
+    return build(level)
+
+
+def _record(world: World, seconds: float, probe: Callable[[World], list[float]]) -> Array:
+    """Step ``world`` for ``seconds`` and stack ``[t, *probe(world)]`` after every step."""
+    rows: list[list[float]] = []
+    for _ in range(round(seconds / world.config.dt)):
+        world.step()
+        rows.append([world.time, *probe(world)])
+    return np.array(rows, dtype=np.float64)
+
+
+# -- chapter 1: kinematic and force-driven -------------------------------------------------------
+
+
+@cache
+def platform_run() -> Array:
+    """The moving_platform level, plus a kinematic character placed beside the player.
+
+    Columns: t (s), platform x, player x, kinematic character x (m), drive force x (N).
+    The kinematic character's velocity is its input (zero): nothing the world does can move it.
+    """
+    scene = _scene("moving_platform")
+    world = scene.world
+    kin = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    kin.position = (0.0, 0.95)
+    world.add("kinematic", kin)
+    player = scene.controllers["player"]
+
+    def probe(w: World) -> list[float]:
+        kin.velocity = (0.0, 0.0)  # input says "stand still": a kinematic body obeys exactly
+        return [
+            w.body("platform").position.x,
+            w.body("player").position.x,
+            kin.position.x,
+            player.last_forces.drive[0],
+        ]
+
+    return _record(world, scene.level.settings.seconds, probe)
+
+
+def ch1_platform_travel() -> float:
+    """How far the platform travels during the level, m."""
+    r = platform_run()
+    return float(r[-1, 1] - r[0, 1])
+
+
+def ch1_player_drift_cm() -> float:
+    """Largest drift of the force-driven player relative to the platform, cm."""
+    r = platform_run()
+    rel = (r[:, 2] - r[:, 1]) - (r[0, 2] - r[0, 1])
+    return float(np.max(np.abs(rel)) * 100.0)
+
+
+def ch1_predicted_drift_cm() -> float:
+    """Drift the drive's time constant predicts: a·τ·T (1 m/s², 0.05 s, 1 s), cm."""
+    return 1.0 * ControllerConfig().drive_time * 1.0 * 100.0
+
+
+def ch1_kinematic_drift() -> float:
+    """Drift of the kinematic character relative to the platform at the end, m."""
+    r = platform_run()
+    rel = (r[:, 3] - r[:, 1]) - (r[0, 3] - r[0, 1])
+    return float(abs(rel[-1]))
+
+
+def ch1_drive_accel() -> float:
+    """Mean drive force while the platform accelerates (t in [0.75, 1.5] s), N."""
+    r = platform_run()
+    window = (r[:, 0] >= 0.75) & (r[:, 0] <= 1.5)
+    return float(np.mean(r[window, 4]))
+
+
+# -- chapter 2: reverse force integration --------------------------------------------------------
+
+SLIDE_DAMPING = 0.5
+"""Chapter 2's world keeps half its velocity per second: damping large enough to see."""
+
+
+@cache
+def slide_run() -> Array:
+    """A 10 kg box thrown sideways at 3 m/s onto a floor, in a world with damping 0.5.
+
+    Columns: t (s), engine force x, y (reverse integration), contact sum x, y, and the naive
+    estimate x, y that forgets damping, m·(v₁ − v₀)/dt − m·g (N).
+    """
+    world = World(WorldConfig(damping=SLIDE_DAMPING, contact_split=True))
+    world.add_static_segment((-5.0, 0.0), (20.0, 0.0))
+    box = world.add_box("box", mass=10.0, size=(0.5, 0.5), position=(0.0, 0.5), friction=0.3)
+    box.velocity = (3.0, 0.0)
+    world.track("box")
+    last = [box.velocity.x, box.velocity.y]
+
+    def probe(w: World) -> list[float]:
+        f = w.forces("box")
+        v = box.velocity
+        m, dt = box.mass, w.config.dt
+        naive = [m * (v.x - last[0]) / dt, m * (v.y - last[1]) / dt + m * G]
+        last[:] = [v.x, v.y]
+        return [*f.engine, *f.contact, *naive]
+
+    return _record(world, 1.5, probe)
+
+
+def ch2_max_disagreement() -> float:
+    """Largest |engine − contact sum| over the run, as a fraction of the box's weight."""
+    r = slide_run()
+    return float(np.max(np.hypot(r[:, 1] - r[:, 3], r[:, 2] - r[:, 4])) / (10.0 * G))
+
+
+def ch2_ghost_force() -> float:
+    """The naive estimate's x force on the first step (nothing touches the box yet), N."""
+    return float(slide_run()[0, 5])
+
+
+@cache
+def seesaw_run() -> Array:
+    """The seesaw level with the contact split on. Columns: t (s), the plank's engine force y,
+    contact y and constraint (joint) y (N), and the hover's reaction on the plank y (N)."""
+    scene = _scene("seesaw", contact_split=True)
+    player = scene.controllers["player"]
+
+    def probe(w: World) -> list[float]:
+        f = w.forces("plank")
+        return [f.engine[1], f.contact[1], f.constraint[1], -player.last_forces.hover[1]]
+
+    return _record(scene.world, scene.level.settings.seconds, probe)
+
+
+def _last_second(r: Array, col: int) -> float:
+    return float(np.mean(r[r[:, 0] > r[-1, 0] - 1.0, col]))
+
+
+def ch2_plank_joint() -> float:
+    """Mean joint force on the plank over the last second (the residual engine − contact), N."""
+    return _last_second(seesaw_run(), 3)
+
+
+def ch2_plank_contact() -> float:
+    """Mean contact force on the plank over the last second, N."""
+    return _last_second(seesaw_run(), 2)
+
+
+def ch2_total_weight() -> float:
+    """Weight of the plank (20 kg) and the player (70 kg), N."""
+    return (20.0 + ControllerConfig().mass) * G
+
+
+# -- chapter 3: perceived gravity ----------------------------------------------------------------
+
+
+@cache
+def room_run() -> Array:
+    """The rotating_room level. Columns: t (s), the field's angle and the perceived gravity's
+    angle (degrees, from +x), the player's tilt against its up (degrees)."""
+    scene = _scene("rotating_room")
+
+    def probe(w: World) -> list[float]:
+        g = w.gravity_at("player")
+        p = w.perceived_gravity("player")
+        return [
+            math.degrees(math.atan2(g[1], g[0])),
+            math.degrees(math.atan2(p[1], p[0])),
+            math.degrees(scene.tilt("player")),
+        ]
+
+    return _record(scene.world, scene.level.settings.seconds, probe)
+
+
+def ch3_room_max_lag() -> float:
+    """Largest angle between the field and the perceived gravity during the turn, degrees."""
+    r = room_run()
+    return float(np.max(np.abs(r[:, 2] - r[:, 1])[r[:, 0] > 0.5]))
+
+
+def ch3_room_final_error() -> float:
+    """Angle between the field and the perceived gravity at the end, degrees."""
+    r = room_run()
+    return float(abs(r[-1, 2] - r[-1, 1]))
+
+
+RING_RADIUS = 5.0
+"""Inner radius of chapter 3's ring, m."""
+
+
+@cache
+def ring_reading(rate: float) -> tuple[float, float]:
+    """A 10 kg box carried round the inside of a ring spinning at ``rate`` (rad/s), no gravity.
+
+    Returns (|perceived gravity|, ω²·r at its centre) after 3 s, m/s².
+    """
+    world = World(gravity=(0.0, 0.0))
+    ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    world.add("ring", ring)
+    ring_room(world.space, ring, RING_RADIUS, segments=64)
+    world.add_mover("ring", Spin(rate=rate))
+    r0 = RING_RADIUS - 0.5
+    box = world.add_box("box", mass=10.0, size=(0.5, 1.0), position=(0.0, -r0))
+    box.velocity = (rate * r0, 0.0)
+    box.angular_velocity = rate
+    world.track("box")
+    world.run(3.0)
+    return float(np.hypot(*world.perceived_gravity("box"))), rate**2 * float(
+        np.hypot(*box.position)
+    )
+
+
+def ch3_ring_perceived() -> float:
+    """|Perceived gravity| in the ring at 1.5 rad/s, m/s²."""
+    return ring_reading(1.5)[0]
+
+
+def ch3_ring_expected() -> float:
+    """ω²·r in the ring at 1.5 rad/s, m/s²."""
+    return ring_reading(1.5)[1]
+
+
+def ch3_ring_ratio() -> float:
+    """Perceived gravity at 3 rad/s over that at 1.5 rad/s (twice the spin)."""
+    return ring_reading(3.0)[0] / ring_reading(1.5)[0]
+
+
+# -- chapter 4: filtering a spiky force ----------------------------------------------------------
+
+CH4_FILTERS: dict[str, Callable[[], Filter] | None] = {
+    "raw": None,
+    "moving average 5 Hz": lambda: ExponentialMovingAverage(cutoff=5.0),
+    "1€ 2 Hz, β 0.05": lambda: OneEuroFilter(min_cutoff=2.0, beta=0.05),
+    "median-of-3 + 1€": lambda: FilterChain(Median3(), OneEuroFilter(min_cutoff=2.0, beta=0.05)),
+}
+"""Chapter 4's filters, by label (the last is what perception uses by default)."""
+
+
+def _filtered(make: Callable[[], Filter] | None, x: Array, dt: float) -> Array:
+    if make is None:
+        return x
+    f = make()
+    return np.array([f.filter(float(v), dt) for v in x], dtype=np.float64)
+
+
+@cache
+def bounce_run() -> Array:
+    """The bounce level: ball1's felt vertical specific force (m/s²) over time. Columns: t (s),
+    then one column per filter of :data:`CH4_FILTERS`."""
+    scene = _scene("bounce")
+    raw = _record(
+        scene.world, scene.level.settings.seconds, lambda w: [w.forces("ball1").specific[1]]
+    )
+    cols = [_filtered(make, raw[:, 1], DT) for make in CH4_FILTERS.values()]
+    return np.column_stack([raw[:, 0], *cols])
+
+
+NOISE = 0.5
+"""Standard deviation of the synthetic reading's noise at rest, m/s²."""
+
+
+@cache
+def _noisy_rest() -> Array:
+    """Two seconds of a resting reading g plus seeded Gaussian noise, m/s²."""
+    rng = np.random.default_rng(7)
+    return G + NOISE * rng.standard_normal(round(2.0 / DT))
+
+
+def jitter(make: Callable[[], Filter] | None) -> float:
+    """Spread (standard deviation) of the filtered noisy rest signal after 1 s, m/s²."""
+    out = _filtered(make, _noisy_rest(), DT)
+    return float(np.std(out[round(1.0 / DT) :]))
+
+
+def lag(make: Callable[[], Filter] | None) -> float:
+    """Delay following a ramp of g per second, s (see bench.accuracy.filter_lag)."""
+    from playground.bench.accuracy import filter_lag
+
+    return filter_lag(make, DT)
+
+
+TUNE_CUTOFFS = (8.0, 4.0, 2.0, 1.0, 0.5)
+"""Hz: the min_cutoff ladder of the tuning procedure (β = 0)."""
+
+TUNE_BETAS = (0.0, 0.01, 0.05, 0.2, 1.0)
+"""The β ladder of the tuning procedure."""
+
+JITTER_TARGET = 0.1
+"""m/s²: "stops jittering" — a 1 % wobble of g, below what a player sees in the camera's up."""
+
+LAG_TARGET = 0.05
+"""s: "stops lagging" — three steps at 60 fps."""
+
+
+@cache
+def tuning() -> tuple[list[tuple[float, float]], float, list[tuple[float, float]], float]:
+    """The tuning procedure on the synthetic signal.
+
+    Returns ([(min_cutoff, jitter)], chosen min_cutoff, [(β, lag)], chosen β).
+    """
+    steps = [(fc, jitter(partial(OneEuroFilter, min_cutoff=fc))) for fc in TUNE_CUTOFFS]
+    chosen = next((fc for fc, j in steps if j < JITTER_TARGET), TUNE_CUTOFFS[-1])
+    betas = [(b, lag(partial(OneEuroFilter, min_cutoff=chosen, beta=b))) for b in TUNE_BETAS]
+    beta = next((b for b, d in betas if d < LAG_TARGET), TUNE_BETAS[-1])
+    return steps, chosen, betas, beta
+
+
+SPIKE = 300.0
+"""Height of chapter 4's one-step spike over g, m/s² (a bounce of a 1 kg ball is of this order)."""
+
+
+def spike_peak(make: Callable[[], Filter]) -> float:
+    """Largest excess over g at the output when one step of a resting signal jumps by SPIKE."""
+    x = np.full(240, G)
+    x[120] += SPIKE
+    return float(np.max(_filtered(make, x, DT)) - G)
+
+
+def ch4_jitter_raw() -> float:
+    return jitter(None)
+
+
+def ch4_jitter_ema() -> float:
+    return jitter(CH4_FILTERS["moving average 5 Hz"])
+
+
+def ch4_jitter_euro() -> float:
+    return jitter(CH4_FILTERS["1€ 2 Hz, β 0.05"])
+
+
+def ch4_lag_ema() -> float:
+    return lag(CH4_FILTERS["moving average 5 Hz"])
+
+
+def ch4_lag_euro() -> float:
+    return lag(CH4_FILTERS["1€ 2 Hz, β 0.05"])
+
+
+def ch4_tuned_cutoff() -> float:
+    return tuning()[1]
+
+
+def ch4_tuned_beta() -> float:
+    return tuning()[3]
+
+
+def ch4_tuned_lag_beta0() -> float:
+    """Lag of the chosen min_cutoff with β = 0, s."""
+    return tuning()[2][0][1]
+
+
+def ch4_tuned_lag() -> float:
+    """Lag of the chosen min_cutoff and β, s."""
+    _, _, betas, beta = tuning()
+    return dict(betas)[beta]
+
+
+def ch4_spike_euro() -> float:
+    return spike_peak(CH4_FILTERS["1€ 2 Hz, β 0.05"])  # type: ignore[arg-type]
+
+
+def ch4_spike_median() -> float:
+    return spike_peak(CH4_FILTERS["median-of-3 + 1€"])  # type: ignore[arg-type]
+
+
+# -- chapter 5: the floating capsule -------------------------------------------------------------
+
+
+def ch5_k() -> float:
+    """Hover stiffness of the default player, k = m·(2πf)², N/m."""
+    c = ControllerConfig()
+    return c.mass * (2.0 * math.pi * c.hover_frequency) ** 2
+
+
+def ch5_c() -> float:
+    """Hover damping of the default player, c = 2ζ·m·2πf, N·s/m."""
+    c = ControllerConfig()
+    return 2.0 * c.hover_damping * c.mass * 2.0 * math.pi * c.hover_frequency
+
+
+HOVER_DROP = 0.005
+"""m: how far below ride height chapter 5's player starts: small, so the overshoot stays under
+g/ω² ≈ 1 cm, where the spring would have to pull (a floor cannot pull: the hover clips at zero)."""
+
+
+@cache
+def hover_run(zeta: float) -> Array:
+    """A player released HOVER_DROP below its ride height. Columns: t (s), height above the
+    ride height (m) measured by the probe."""
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+    cfg = ControllerConfig(hover_damping=zeta, lock_rotation=True)
+    floor_top = 0.05  # the floor segment's radius: its surface, where the probe hits
+    start = (0.0, floor_top + cfg.ride_height - HOVER_DROP)
+    player = Controller(world, "player", start, config=cfg)
+    return _record(world, 0.6, lambda w: [player.body.position.y - floor_top - cfg.ride_height])
+
+
+def hover_theory(zeta: float, t: Array) -> Array:
+    """The damped oscillator x'' + 2ζω x' + ω² x = 0 from x = −HOVER_DROP at rest, m."""
+    w = 2.0 * math.pi * ControllerConfig().hover_frequency
+    x0 = -HOVER_DROP
+    if zeta < 1.0:
+        wd = w * math.sqrt(1.0 - zeta**2)
+        out: Array = x0 * np.exp(-zeta * w * t) * (np.cos(wd * t) + zeta * w / wd * np.sin(wd * t))
+        return out
+    return x0 * np.exp(-w * t) * (1.0 + w * t)
+
+
+def ch5_overshoot_sim() -> float:
+    """Overshoot above ride height at ζ = 0.5, as a fraction of the drop (simulated)."""
+    return float(np.max(hover_run(0.5)[:, 1]) / HOVER_DROP)
+
+
+def ch5_overshoot_theory() -> float:
+    """Overshoot of a damped oscillator at ζ = 0.5: exp(−ζπ/√(1 − ζ²))."""
+    z = 0.5
+    return math.exp(-z * math.pi / math.sqrt(1.0 - z * z))
+
+
+def spring_growth(omega_dt: float, zeta: float, seconds: float = 2.0) -> float:
+    """How much a spring's swing grows over the second half of a run (late peak / mid peak).
+
+    A 1 kg body in pymunk on a force spring −k·x − c·v (k = ω², c = 2ζω, ω = omega_dt / dt),
+    the force put on it every step before ``space.step``, as the hover does. Above 1: it gains
+    energy, unstable.
+    """
+    world = World(gravity=(0.0, 0.0))
+    body = pymunk.Body(1.0, math.inf)
+    world.add("bob", body)
+    body.position = (0.01, 0.0)
+    w = omega_dt / world.config.dt
+    k, c = w * w, 2.0 * zeta * w
+
+    def spring(wd: World) -> None:
+        x, v = body.position.x, body.velocity.x
+        if math.isfinite(x) and abs(x) < 1e100:
+            wd.apply_force(body, (-k * x - c * v, 0.0))
+
+    world.on(Stage.CONTROL, spring)
+    r = _record(world, seconds, lambda wd: [abs(body.position.x)])
+    window = 0.25
+    mid = r[(r[:, 0] > seconds / 2 - window) & (r[:, 0] <= seconds / 2), 1].max()
+    late = r[r[:, 0] > seconds - window, 1].max()
+    return float(late / mid) if mid > 0.0 else 0.0
+
+
+def ch5_ratio_below() -> float:
+    """Late/mid swing at 2πf·dt = 1.9, ζ = 1 (stable: far below 1)."""
+    return spring_growth(1.9, 1.0)
+
+
+def ch5_ratio_above_log10() -> float:
+    """log10 of late/mid swing at 2πf·dt = 2.1, ζ = 1 (unstable)."""
+    return math.log10(spring_growth(2.1, 1.0))
+
+
+def ch5_undamped_per_second() -> float:
+    """Growth of an undamped spring's swing per second at the default 5 Hz and dt = 1/120 s."""
+    wh = 2.0 * math.pi * ControllerConfig().hover_frequency * DT
+    return float(spring_growth(wh, 0.0, seconds=4.0) ** 0.5)
+
+
+def stability_limit(zeta: float) -> float:
+    """The largest 2πf·dt at which the simulated spring at damping ratio ``zeta`` does not grow,
+    by bisection to 1e-3."""
+    lo, hi = 0.01, 3.0
+    while hi - lo > 1e-3:
+        mid = 0.5 * (lo + hi)
+        if spring_growth(mid, zeta, seconds=20.0) <= 1.0:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+def ch5_limit_zeta1() -> float:
+    return stability_limit(1.0)
+
+
+def ch5_limit_zeta05() -> float:
+    return stability_limit(0.5)
+
+
+@cache
+def walk_run() -> Array:
+    """A player starts walking right at full input at t = 0.5 s. Columns: t (s), speed (m/s),
+    drive force x (N)."""
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (20.0, 0.0))
+    script = Script(((0.0, Intent()), (0.5, Intent(move=1.0))))
+    player = Controller(world, "player", (0.0, 0.95), source=script)
+    return _record(world, 2.0, lambda w: [player.body.velocity.x, player.last_forces.drive[0]])
+
+
+def ch5_drive_peak() -> float:
+    """Largest drive force while speeding up, N."""
+    return float(np.max(walk_run()[:, 2]))
+
+
+def ch5_time_to_90() -> float:
+    """Time from the first input to 90 % of max_speed, s."""
+    r = walk_run()
+    fast = r[r[:, 1] >= 0.9 * ControllerConfig().max_speed, 0]
+    return float(fast[0] - 0.5)
+
+
+def shove(impulse: float, seconds: float = 2.0) -> tuple[bool, Array]:
+    """A sideways impulse (N·s) at head height on a standing player after 1 s.
+
+    Returns (lost balance?, rows of t (s), tilt (degrees), state code (0 grounded, 1 off balance,
+    2 getting up, 3 other)) over ``seconds`` of simulation.
+    """
+    world = World()
+    world.add_static_segment((-10.0, 0.0), (10.0, 0.0))
+    player = Controller(world, "player", (0.0, 0.95))
+    world.at(1.0, lambda w: w.apply_impulse("player", (impulse, 0.0), point=(0.0, 1.7)))
+    codes = {State.GROUNDED: 0, State.OFF_BALANCE: 1, State.GETTING_UP: 2}
+    r = _record(
+        world, seconds, lambda w: [math.degrees(player.tilt), float(codes.get(player.state, 3))]
+    )
+    return bool(np.any(r[:, 2] == 1.0)), r
+
+
+def ch5_knockover() -> float:
+    """The smallest head-height shove that knocks the player over, N·s (bisection, ±1 N·s)."""
+    lo, hi = 0.0, 400.0
+    while hi - lo > 1.0:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if shove(mid)[0] else (mid, hi)
+    return hi
+
+
+# -- chapter 6: playing with gravity -------------------------------------------------------------
+
+
+@cache
+def flip_run() -> Array:
+    """The gravity_flip level. Columns: t (s), height y (m), tilt against up (degrees),
+    perceived gravity y (m/s²), grounded (1/0)."""
+    scene = _scene("gravity_flip")
+    player = scene.controllers["player"]
+
+    def probe(w: World) -> list[float]:
+        return [
+            player.body.position.y,
+            math.degrees(scene.tilt("player")),
+            w.perceived_gravity("player")[1],
+            1.0 if player.state is State.GROUNDED else 0.0,
+        ]
+
+    return _record(scene.world, scene.level.settings.seconds, probe)
+
+
+def _after_flight(r: Array) -> Array:
+    """Rows from the first grounded step after the player left the floor."""
+    flying = np.nonzero((r[:, 0] > 1.0) & (r[:, 4] == 0.0))[0][0]
+    back = flying + np.nonzero(r[flying:, 4] == 1.0)[0][0]
+    return r[back:]
+
+
+def ch6_probe_tilt() -> float:
+    """Tilt against up when the probe first finds the ceiling, degrees."""
+    return float(_after_flight(flip_run())[0, 2])
+
+
+def ch6_ride_tilt() -> float:
+    """Tilt against up when the player first reaches its ride height under the ceiling, deg."""
+    r = _after_flight(flip_run())
+    return float(r[r[:, 1] >= 3.0 - 1e-3][0, 2])
+
+
+def ch6_upright_time() -> float:
+    """Time after the flip at which the tilt first drops below 15°, s."""
+    r = _after_flight(flip_run())
+    return float(r[r[:, 2] < 15.0][0, 0] - 1.0)
+
+
+def ch6_final_perceived() -> float:
+    """Perceived gravity y at the end, m/s² (positive: "down" is now up)."""
+    return float(flip_run()[-1, 3])
+
+
+@cache
+def null_run() -> Array:
+    """The null_enemy level. Columns: t (s), the enemy's speed (m/s), its |perceived gravity|
+    (m/s²), its gravity y (m/s²)."""
+    scene = _scene("null_enemy")
+    enemy = scene.controllers["enemy"]
+
+    def probe(w: World) -> list[float]:
+        return [
+            float(np.hypot(*enemy.body.velocity)),
+            float(np.hypot(*w.perceived_gravity("enemy"))),
+            w.gravity_at("enemy")[1],
+        ]
+
+    return _record(scene.world, scene.level.settings.seconds, probe)
+
+
+def ch6_null_perceived() -> float:
+    """The nullified enemy's |perceived gravity| at the end, m/s²."""
+    return float(null_run()[-1, 2])
+
+
+def ch6_null_speed_change() -> float:
+    """Largest change of the enemy's speed after t = 1.5 s, m/s."""
+    r = null_run()
+    after = r[r[:, 0] >= 1.5, 1]
+    return float(np.max(np.abs(after - after[0])))
+
+
+def ch6_air_budget_bound() -> float:
+    """What the air budget allows over 1.5 s: air_force / m · 1.5 s, m/s."""
+    c = ControllerConfig()
+    return c.air_force / c.mass * 1.5
+
+
+# -- chapter 7: what accuracy costs --------------------------------------------------------------
+
+CH7_DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240)
+"""Steps of chapter 7's sweep, s."""
+
+
+@dataclass(frozen=True, slots=True)
+class AccuracyRow:
+    """One point of chapter 7: dt (s), estimator, relative error, µs per step (not quoted)."""
+
+    dt: float
+    estimator: str
+    error: float
+    cost_us: float
+
+
+@cache
+def accuracy_rows() -> tuple[AccuracyRow, ...]:
+    """The ring scene of the bench (docs/accuracy.md) at each dt, reverse integration and finite
+    differences, unfiltered."""
+    from playground.bench.accuracy import Point, measure
+    from playground.bench.scenes import Knobs
+
+    rows = []
+    estimators: tuple[Literal["reverse", "finite-difference"], ...] = (
+        "reverse",
+        "finite-difference",
+    )
+    for est in estimators:
+        for dt in CH7_DTS:
+            (r,) = measure(Point("ring", Knobs(dt=dt), est), filters=("none",), repeats=3)
+            rows.append(AccuracyRow(dt, est, r.error, r.cost_us))
+    return tuple(rows)
+
+
+def _acc(est: str, dt: float) -> float:
+    return next(r.error for r in accuracy_rows() if r.estimator == est and r.dt == dt) * 100.0
+
+
+def ch7_reverse_30() -> float:
+    """Ring error of reverse integration at dt = 1/30 s, %."""
+    return _acc("reverse", 1 / 30)
+
+
+def ch7_reverse_240() -> float:
+    """Ring error of reverse integration at dt = 1/240 s, %."""
+    return _acc("reverse", 1 / 240)
+
+
+def ch7_fd_120() -> float:
+    """Ring error of finite differences at dt = 1/120 s, %."""
+    return _acc("finite-difference", 1 / 120)
+
+
+def ch7_reverse_120() -> float:
+    """Ring error of reverse integration at dt = 1/120 s, %."""
+    return _acc("reverse", 1 / 120)
+
+
+NUMBERS: dict[str, Callable[[], float]] = {
+    f.__name__: f
+    for f in (
+        ch1_platform_travel,
+        ch1_player_drift_cm,
+        ch1_predicted_drift_cm,
+        ch1_kinematic_drift,
+        ch1_drive_accel,
+        ch2_max_disagreement,
+        ch2_ghost_force,
+        ch2_plank_joint,
+        ch2_plank_contact,
+        ch2_total_weight,
+        ch3_room_max_lag,
+        ch3_room_final_error,
+        ch3_ring_perceived,
+        ch3_ring_expected,
+        ch3_ring_ratio,
+        ch4_jitter_raw,
+        ch4_jitter_ema,
+        ch4_jitter_euro,
+        ch4_lag_ema,
+        ch4_lag_euro,
+        ch4_tuned_cutoff,
+        ch4_tuned_beta,
+        ch4_tuned_lag_beta0,
+        ch4_tuned_lag,
+        ch4_spike_euro,
+        ch4_spike_median,
+        ch5_k,
+        ch5_c,
+        ch5_overshoot_sim,
+        ch5_overshoot_theory,
+        ch5_ratio_below,
+        ch5_ratio_above_log10,
+        ch5_undamped_per_second,
+        ch5_limit_zeta1,
+        ch5_limit_zeta05,
+        ch5_drive_peak,
+        ch5_time_to_90,
+        ch5_knockover,
+        ch6_probe_tilt,
+        ch6_ride_tilt,
+        ch6_upright_time,
+        ch6_final_perceived,
+        ch6_null_perceived,
+        ch6_null_speed_change,
+        ch6_air_budget_bound,
+        ch7_reverse_30,
+        ch7_reverse_120,
+        ch7_reverse_240,
+        ch7_fd_120,
+    )
+}
+"""Every number the chapters quote, by the name their markers use."""
+
+
+# -- figures -------------------------------------------------------------------------------------
+
+
+def _axes(rows: int, cols: int = 1, height: float = 3.0) -> tuple[Any, Any]:
+    """A matplotlib figure (headless Agg backend) and its axes, as a flat list."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(rows, cols, figsize=(7.5 * cols, height * rows), squeeze=False)
+    for ax in axes.flat:
+        ax.grid(True, alpha=0.3)
+    return fig, list(axes.flat)
+
+
+def _save(fig: Any, path: Path) -> Path:
+    import matplotlib.pyplot as plt
+
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def fig_ch1(path: Path) -> Path:
+    """Drift relative to the platform, and the drive force that carries the player."""
+    r = platform_run()
+    fig, (a, b) = _axes(2)
+    a.plot(r[:, 0], 100 * ((r[:, 2] - r[:, 1]) - (r[0, 2] - r[0, 1])), label="force-driven player")
+    a.plot(r[:, 0], 100 * ((r[:, 3] - r[:, 1]) - (r[0, 3] - r[0, 1])), label="kinematic character")
+    a.set_ylabel("x relative to platform (cm)")
+    a.set_title("moving_platform: who stays on the platform?")
+    a.legend()
+    b.plot(r[:, 0], r[:, 4], color="C2", label="drive force on the player")
+    b.axhline(70.0, color="k", ls="--", lw=1, label="m·a = 70 kg · 1 m/s²")
+    b.set_xlabel("time (s)")
+    b.set_ylabel("drive force x (N)")
+    b.legend()
+    return _save(fig, path)
+
+
+def fig_ch2(path: Path) -> Path:
+    """Reverse integration against the contact sum, the naive estimate, and a joint's share."""
+    r = slide_run()
+    s = seesaw_run()
+    fig, (a, b, c) = _axes(3, height=2.6)
+    a.plot(r[:, 0], r[:, 1], lw=3, alpha=0.5, label="reverse integration (damping included)")
+    a.plot(r[:, 0], r[:, 3], "k--", lw=1, label="sum of contact impulses / dt")
+    a.plot(r[:, 0], r[:, 5], color="C3", label="naive: m·Δv/dt − m·g (damping forgotten)")
+    a.set_ylabel("force x (N)")
+    a.set_title("a 10 kg box thrown at 3 m/s, damping 0.5: friction along x")
+    a.legend(fontsize=8)
+    b.plot(r[:, 0], r[:, 2], lw=3, alpha=0.5, label="reverse integration")
+    b.plot(r[:, 0], r[:, 4], "k--", lw=1, label="contact sum")
+    b.set_ylabel("force y (N)")
+    b.set_xlabel("time (s)")
+    b.legend(fontsize=8)
+    c.plot(s[:, 0], s[:, 1], lw=3, alpha=0.5, label="plank: engine force (reverse integration)")
+    c.plot(s[:, 0], s[:, 2], "k--", label="plank: contact sum")
+    c.plot(s[:, 0], s[:, 3], color="C3", label="residual engine − contact = joints")
+    c.set_ylim(-100, 1200)
+    c.set_xlabel("time (s)")
+    c.set_ylabel("force y (N)")
+    c.set_title("seesaw: the pivot carries the plank and the player")
+    c.legend(fontsize=8)
+    return _save(fig, path)
+
+
+def fig_ch3(path: Path) -> Path:
+    """The rotating room's field and perceived gravity; the ring's v²/r."""
+    r = room_run()
+    fig, (a, b) = _axes(2)
+    a.plot(r[:, 0], r[:, 1], lw=3, alpha=0.5, label="gravity field at the player")
+    a.plot(r[:, 0], r[:, 2], "k--", label="perceived gravity (1€-filtered)")
+    a.set_xlabel("time (s)")
+    a.set_ylabel("direction (degrees from +x)")
+    a.set_title("rotating_room")
+    a.legend()
+    rates = np.array([0.5, 1.0, 1.5, 2.0, 2.5, 3.0])
+    readings = np.array([ring_reading(float(w)) for w in rates])
+    b.plot(rates, readings[:, 1], lw=3, alpha=0.5, label="ω²·r at the box's centre")
+    b.plot(rates, readings[:, 0], "ko", label="|perceived gravity|")
+    b.set_xlabel("ring spin ω (rad/s)")
+    b.set_ylabel("gravity felt (m/s²)")
+    b.set_title("a box riding a 5 m ring, no gravity at all")
+    b.legend()
+    return _save(fig, path)
+
+
+def fig_ch4(path: Path) -> Path:
+    """A bouncing ball's felt force through each filter; jitter and lag of the tuning ladder."""
+    r = bounce_run()
+    steps, _, betas, _ = tuning()
+    fig, axes = _axes(3, height=2.6)
+    a, b, c = axes
+    for i, label in enumerate(CH4_FILTERS, start=1):
+        a.plot(r[:, 0], r[:, i], lw=1 if i == 1 else 2, label=label)
+    a.set_ylim(-20, 150)
+    a.set_xlabel("time (s)")
+    a.set_ylabel("felt force / mass (m/s²)")
+    a.set_title("bounce: ball1 (raw spikes reach thousands of m/s²; clipped)")
+    a.legend(fontsize=8, ncol=2)
+    b.plot([fc for fc, _ in steps], [j for _, j in steps], "o-")
+    b.axhline(JITTER_TARGET, color="k", ls="--", lw=1, label="jitter target")
+    b.set_xscale("log")
+    b.set_xticks(TUNE_CUTOFFS, [f"{v:g}" for v in TUNE_CUTOFFS])
+    b.set_xlabel("min_cutoff (Hz), β = 0")
+    b.set_ylabel("jitter at rest (m/s²)")
+    b.set_title("step 1: lower min_cutoff until the jitter stops")
+    b.legend()
+    c.plot([max(be, 1e-3) for be, _ in betas], [d for _, d in betas], "o-", color="C1")
+    c.axhline(LAG_TARGET, color="k", ls="--", lw=1, label="lag target")
+    c.set_xscale("log")
+    c.set_xticks([1e-3, *TUNE_BETAS[1:]], ["0", *(f"{v:g}" for v in TUNE_BETAS[1:])])
+    c.set_xlabel("β (s/m, 0 drawn at the left)")
+    c.set_ylabel("lag on a ramp (s)")
+    c.set_title("step 2: raise β until the lag goes")
+    c.legend()
+    return _save(fig, path)
+
+
+def fig_ch5(path: Path) -> Path:
+    """Hover step response against theory; the stability limit; a shove that knocks it over."""
+    fig, (a, b, c) = _axes(3, height=2.6)
+    for zeta, color in ((0.5, "C0"), (1.0, "C1")):
+        h = hover_run(zeta)
+        a.plot(
+            h[:, 0], 1000 * h[:, 1], color=color, lw=3, alpha=0.5, label=f"simulated, ζ = {zeta}"
+        )
+        a.plot(
+            h[:, 0],
+            1000 * hover_theory(zeta, h[:, 0]),
+            "--",
+            color=color,
+            label=f"theory, ζ = {zeta}",
+        )
+    a.set_xlabel("time (s)")
+    a.set_ylabel("height − ride height (mm)")
+    a.set_title("hover spring, 5 Hz, released 5 mm low")
+    a.legend(fontsize=8, ncol=2)
+    wh = np.linspace(0.05, 2.4, 48)
+    for zeta, color in ((0.0, "C2"), (0.5, "C0"), (1.0, "C1")):
+        per_step = [spring_growth(float(x), zeta) ** (1.0 / round(1.0 / DT)) for x in wh]
+        b.plot(wh, per_step, color=color, label=f"ζ = {zeta}")
+    b.axhline(1.0, color="k", ls="--", lw=1)
+    b.set_ylim(0.0, 1.6)
+    b.set_xlabel("2πf·dt")
+    b.set_ylabel("swing growth per step")
+    b.set_title("pymunk's integrator on a spring force: above 1 it gains energy")
+    b.legend(fontsize=8)
+    for impulse, color in ((120.0, "C0"), (200.0, "C3")):
+        _, r = shove(impulse, seconds=5.0)
+        c.plot(r[:, 0], r[:, 1], color=color, label=f"shove {impulse:.0f} N·s")
+        off = r[r[:, 2] == 1.0, 0]
+        if len(off):
+            c.axvspan(off[0], off[-1], color=color, alpha=0.1)
+    c.set_xlabel("time (s)")
+    c.set_ylabel("tilt from up (degrees)")
+    c.set_title("balance: a shove at head height (shaded: off balance)")
+    c.legend()
+    return _save(fig, path)
+
+
+def fig_ch6(path: Path) -> Path:
+    """The gravity flip: height and tilt; the null enemy's felt gravity."""
+    r = flip_run()
+    n = null_run()
+    fig, (a, b, c) = _axes(3, height=2.6)
+    a.plot(r[:, 0], r[:, 1])
+    a.axhline(3.0, color="k", ls="--", lw=1, label="ride height under the ceiling")
+    a.set_ylabel("height of the centre (m)")
+    a.set_title("gravity_flip: gravity turns over at t = 1 s")
+    a.legend()
+    b.plot(r[:, 0], r[:, 2], label="tilt from up")
+    b.axhline(15.0, color="k", ls="--", lw=1, label="15°")
+    b.set_xlabel("time (s)")
+    b.set_ylabel("tilt (degrees)")
+    b.legend()
+    c.plot(n[:, 0], n[:, 3], lw=3, alpha=0.5, label="gravity y at the enemy")
+    c.plot(n[:, 0], -n[:, 2], "k--", label="−|perceived gravity| of the enemy")
+    c.set_xlabel("time (s)")
+    c.set_ylabel("m/s²")
+    c.set_title("null_enemy: gravity nullified at t = 1 s")
+    c.legend()
+    return _save(fig, path)
+
+
+def fig_ch7(path: Path) -> Path:
+    """Error and cost against dt on the bench's ring scene."""
+    rows = accuracy_rows()
+    fig, (a, b) = _axes(2)
+    for est, marker in (("reverse", "o-"), ("finite-difference", "s--")):
+        sel = [r for r in rows if r.estimator == est]
+        a.loglog([r.dt for r in sel], [100 * r.error for r in sel], marker, label=est)
+        b.loglog([r.dt for r in sel], [r.cost_us for r in sel], marker, label=est)
+    a.set_ylabel("error (% of m·v²/r)")
+    a.set_title("ring scene: error against the exact answer, unfiltered")
+    a.legend()
+    b.set_xlabel("dt (s)")
+    b.set_ylabel("cost per step (µs, this machine)")
+    b.set_title("cost per step (per simulated second: divide by dt)")
+    b.legend()
+    return _save(fig, path)
+
+
+FIGURES: dict[str, Callable[[Path], Path]] = {
+    "01-kinematic-vs-force-driven.png": fig_ch1,
+    "02-reverse-integration.png": fig_ch2,
+    "03-perceived-gravity.png": fig_ch3,
+    "04-filtering.png": fig_ch4,
+    "05-floating-capsule.png": fig_ch5,
+    "06-playing-with-gravity.png": fig_ch6,
+    "07-accuracy-costs.png": fig_ch7,
+}
+"""Every chapter figure, by file name."""
+
+
+def make_all(out: Path) -> list[Path]:
+    """Draw every figure into directory ``out`` (created if needed); the paths written."""
+    out.mkdir(parents=True, exist_ok=True)
+    return [draw(out / name) for name, draw in FIGURES.items()]
