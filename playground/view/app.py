@@ -500,9 +500,17 @@ class App:
                     surf, self.camera, arrows, body.mass, ((c.x, c.y), world.perceived_up(name))
                 )
             draw_legend(surf, self.small, (self.size[0] - 250, 8))
+        target = self.session.nearest_enemy()
+        if target is not None:
+            # The enemy X would nullify: a ring around it.
+            t = world.body(target).position
+            ring = max(self.camera.pixels(1.2), 12.0)
+            pygame.draw.circle(surf, COLOURS["actor"], self.camera.to_screen((t.x, t.y)), ring, 1)
         ctrl = self.session.player
         state = getattr(getattr(ctrl, "state", None), "value", None)
         notes = ["H: controls"]
+        if self.session.keyboard.flipped:
+            notes.append("own gravity flipped (G restores)")
         if self.session.playback is not None:
             notes.append("replaying")
         elif self.session.script is not None and not self.session.keyboard.touched:
