@@ -125,6 +125,10 @@ class ForceLedger:
         e = self._entries.get(body_id)
         return None if e is None else e.parts
 
+    def items(self) -> list[tuple[int, list[float]]]:
+        """(body id, per-category sums ``[px, py, ax, ay, sx, sy]``) of every body with forces."""
+        return [(body_id, e.parts) for body_id, e in self._entries.items()]
+
     def total(self, body_id: int) -> tuple[float, float, float]:
         """(fx, fy, torque) recorded for a body this step."""
         e = self._entries.get(body_id)
@@ -183,6 +187,8 @@ class ForceSolver:
         self.check_sleep = check_sleep
         self.bodies: list[pymunk.Body] = []
         self._keys = np.zeros(0, dtype=np.uintp)  # sorted body ids
+        self._row_by_id: dict[int, int] = {}
+        self._rows_cache: tuple[NDArray[np.uintp], NDArray[np.intp], NDArray[np.intp]] | None = None
         self._key_row = np.zeros(0, dtype=np.intp)  # tracked index of each sorted id
         self.mass = np.zeros(0)
         self.moment = np.zeros(0)
@@ -248,6 +254,8 @@ class ForceSolver:
 
     def _rebuild_keys(self) -> None:
         ids = np.array([b.id for b in self.bodies], dtype=np.uintp)
+        self._row_by_id = {int(body_id): i for i, body_id in enumerate(ids)}
+        self._rows_cache = None
         order = np.argsort(ids)
         self._keys = ids[order]
         self._key_row = order.astype(np.intp)
@@ -255,7 +263,8 @@ class ForceSolver:
 
     def row_of(self, body: pymunk.Body) -> int | None:
         """The tracked row of a body, or None."""
-        return next((i for i, b in enumerate(self.bodies) if b is body), None)
+        i = self._row_by_id.get(body.id)
+        return i if i is not None and self.bodies[i] is body else None
 
     # -- per step -------------------------------------------------------------------------------
 
@@ -271,10 +280,19 @@ class ForceSolver:
         self._contact_jn = np.zeros((n, 2))
 
     def _rows(self, ids: NDArray[np.uintp]) -> tuple[NDArray[np.intp], NDArray[np.intp]]:
-        """(tracked index, row) pairs for the tracked bodies present in ``ids``."""
+        """(tracked index, row) pairs for the tracked bodies present in ``ids``.
+
+        Row order only changes when bodies are added, removed, sleep or wake: reuse the last
+        answer while ``ids`` is unchanged.
+        """
+        cache = self._rows_cache
+        if cache is not None and np.array_equal(cache[0], ids):
+            return cache[1], cache[2]
         hit = lookup(self._keys, ids)
         rows = np.nonzero(hit >= 0)[0]
-        return self._key_row[hit[rows]], rows
+        tracked = self._key_row[hit[rows]]
+        self._rows_cache = (ids, tracked, rows)
+        return tracked, rows
 
     def before_step(
         self,
@@ -365,15 +383,16 @@ class ForceSolver:
             ang = np.where(np.isinf(inertia), 0.0, inertia * dv[:, 2] - force[:, 2] * dt)
 
         parts = np.zeros((len(self.bodies), 6))
-        for i, body in enumerate(self.bodies):
-            p = ledger.parts(body.id)
-            if p is not None:
+        for body_id, p in ledger.items():  # usually far fewer entries than tracked bodies
+            i = self._row_by_id.get(body_id)
+            if i is not None:
                 parts[i] = p
         ledger_total = parts[:, 0:2] + parts[:, 2:4] + parts[:, 4:6]
         # Whatever was on the body but not in the ledger was put there by someone else: APPLIED.
         unexplained = force[:, 0:2] - ledger_total - self._field
 
-        rows = np.nonzero(ok)[0]
+        # A slice when every row has a reading (the usual case): no fancy-index copies.
+        rows: slice | NDArray[np.intp] = slice(None) if ok.all() else np.nonzero(ok)[0]
         self.valid = ok
         self.engine[rows] = impulse[rows] / dt
         self.engine_torque[rows] = ang[rows] / dt
