@@ -372,8 +372,8 @@ class Controller:
         if self._rising and (v_up <= 0.0 or hit is None):
             self._rising = False
 
-        self._update_grip(world, it, ux, uy)
-        self._update_state(world, hit, v_up)
+        self._update_grip(world, it)
+        self._update_state(world, hit)
         state = self.state
 
         hover = drive = push = _ZERO
@@ -468,7 +468,7 @@ class Controller:
 
     # -- states ----------------------------------------------------------------------------------
 
-    def _update_state(self, world: World, hit: GroundHit | None, v_up: float) -> None:
+    def _update_state(self, world: World, hit: GroundHit | None) -> None:
         cfg = self.config
         t = world.time
         state = self.state
@@ -684,7 +684,7 @@ class Controller:
 
     # -- grab, hang, climb -----------------------------------------------------------------------
 
-    def _update_grip(self, world: World, it: Intent, ux: float, uy: float) -> None:
+    def _update_grip(self, world: World, it: Intent) -> None:
         cfg = self.config
         joint = self.joint
         if joint is not None:
