@@ -6,7 +6,7 @@ them run once per process (cached) and headless; matplotlib is imported only whe
 drawn (it is in the ``bench`` extra). ``playground figures`` regenerates every figure.
 
 >>> round(NUMBERS["ch5_k"](), 1)
-69087.6
+69087.2
 """
 
 from __future__ import annotations

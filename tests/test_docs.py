@@ -1,0 +1,133 @@
+"""Laws of the teaching chapters (docs/chapters): the text and the code never disagree.
+
+Every number a chapter quotes sits in a marker, ``<!-- num:NAME -->3.00<!-- /num -->`` (the value
+of ``playground.figures.NUMBERS[NAME]`` rounded to the digits shown) or
+``<!-- below:NAME -->1e-12<!-- /below -->`` (an upper bound on it). The snippets themselves run as
+doctests (pytest collects ``docs/**/*.md``). The exercises' answers are checked as laws here.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from playground import figures
+from playground.cli import main
+
+DOCS = Path(__file__).resolve().parent.parent / "docs"
+CHAPTERS = sorted((DOCS / "chapters").glob("*.md"))
+MARKER = re.compile(r"<!-- (num|below):(\w+) -->([^<]*)<!-- /\1 -->")
+FIGURE = re.compile(r"!\[[^\]]*\]\(\.\./img/chapters/([^)]+)\)")
+
+TOL_REL = 1e-9
+"""Relative slack beyond the printed rounding: float noise across machines and BLAS builds."""
+
+TOL_RING = 0.02
+"""Relative: the ring box's perceived gravity against ω²·r (the 1€ filter's residual lag and the
+box's rocking on 64 flat segments leave about 1 %)."""
+
+TOL_LIMIT = 0.01
+"""On 2πf·dt: the bisection's resolution (1e-3) plus the slow growth right at the limit."""
+
+TOL_DRIFT = 1e-3
+"""m: the drive's drift against a·τ·T (the lag's own settling adds well under a millimetre)."""
+
+
+def markers() -> list[tuple[str, str, str, str]]:
+    """(chapter file, kind, name, text) of every marker in the chapters."""
+    found = []
+    for path in CHAPTERS:
+        for kind, name, text in MARKER.findall(path.read_text(encoding="utf-8")):
+            found.append((path.name, kind, name, text.strip()))
+    return found
+
+
+def printed_rounding(text: str) -> float:
+    """Half a unit of the last printed digit of ``text`` ("5.0" → 0.05, "882.9" → 0.05)."""
+    digits = len(text.split(".")[1]) if "." in text else 0
+    return 0.5 * 10.0**-digits
+
+
+def test_there_are_seven_chapters_and_an_index_linking_them_in_order() -> None:
+    """The table of contents lists every chapter, in reading order."""
+    assert len(CHAPTERS) == 7
+    index = (DOCS / "index.md").read_text(encoding="utf-8")
+    positions = [index.find(f"chapters/{p.name}") for p in CHAPTERS]
+    assert all(p >= 0 for p in positions), positions
+    assert positions == sorted(positions)
+
+
+@pytest.mark.parametrize(("chapter", "kind", "name", "text"), markers())
+def test_quoted_number_is_what_the_code_computes(
+    chapter: str, kind: str, name: str, text: str
+) -> None:
+    """A quoted number is the code's value rounded to the digits shown (or a bound above it)."""
+    assert name in figures.NUMBERS, f"{chapter}: unknown number {name!r}"
+    value = figures.NUMBERS[name]()
+    quoted = float(text)
+    if kind == "below":
+        assert value < quoted, f"{chapter}: {name} = {value!r} is not below {text}"
+    else:
+        slack = printed_rounding(text) + TOL_REL * abs(value)
+        assert abs(value - quoted) <= slack, f"{chapter}: {name} = {value!r}, text says {text}"
+
+
+def test_every_number_the_code_makes_is_quoted() -> None:
+    """No number is computed for nothing: each one in NUMBERS appears in some chapter."""
+    quoted = {name for _, _, name, _ in markers()}
+    assert set(figures.NUMBERS) <= quoted, sorted(set(figures.NUMBERS) - quoted)
+
+
+def test_every_chapter_shows_a_figure_the_code_makes() -> None:
+    """Each chapter embeds at least one figure, and every embedded figure is in FIGURES."""
+    for path in CHAPTERS:
+        shown = FIGURE.findall(path.read_text(encoding="utf-8"))
+        assert shown, f"{path.name}: no figure"
+        for name in shown:
+            assert name in figures.FIGURES, f"{path.name}: {name} is not made by the code"
+
+
+def test_one_command_regenerates_every_figure(tmp_path: Path) -> None:
+    """``playground figures --out DIR`` writes one PNG per figure, headless."""
+    assert main(["figures", "--out", str(tmp_path)]) == 0
+    for name in figures.FIGURES:
+        data = (tmp_path / name).read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n", name
+
+
+def test_exercise_1_drift_is_a_tau_t() -> None:
+    """Chapter 1: the drive is a first-order lag, so the drift is a·τ·T."""
+    drift = figures.ch1_player_drift_cm() / 100.0
+    assert abs(drift - figures.ch1_predicted_drift_cm() / 100.0) < TOL_DRIFT
+
+
+def test_exercise_2_ghost_force_is_the_forgotten_damping() -> None:
+    """Chapter 2: the naive estimate's first-step force is −m·(1 − d)·v₀/h."""
+    d = figures.SLIDE_DAMPING**figures.DT
+    expected = -10.0 * (1.0 - d) * 3.0 / figures.DT
+    assert math.isclose(figures.ch2_ghost_force(), expected, rel_tol=1e-6)
+
+
+def test_exercise_3_twice_the_spin_four_times_the_gravity() -> None:
+    """Chapter 3: perceived gravity in the ring is ω²·r, so doubling ω quadruples it."""
+    for rate in (1.5, 3.0):
+        felt, exact = figures.ring_reading(rate)
+        assert abs(felt - exact) < TOL_RING * exact
+    assert abs(figures.ch3_ring_ratio() - 4.0) < 4.0 * 2 * TOL_RING
+
+
+def test_exercise_4_median_of_3_removes_a_one_step_spike() -> None:
+    """Chapter 4: a one-step spike passes the 1€ filter at most of its height, not the median."""
+    assert figures.ch4_spike_median() == 0.0
+    assert figures.ch4_spike_euro() > 0.5 * figures.SPIKE
+
+
+def test_exercise_5_stability_limit_is_two_zeta() -> None:
+    """Chapter 5: with the force computed before pymunk's step, the spring is stable while
+    2πf·dt < 2ζ (ζ ≤ 1): 2 at critical damping, none at all undamped."""
+    assert abs(figures.ch5_limit_zeta1() - 2.0) < TOL_LIMIT
+    assert abs(figures.ch5_limit_zeta05() - 1.0) < TOL_LIMIT
+    assert figures.ch5_undamped_per_second() > 1.0
