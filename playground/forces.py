@@ -188,7 +188,10 @@ class ForceSolver:
         self.bodies: list[pymunk.Body] = []
         self._keys = np.zeros(0, dtype=np.uintp)  # sorted body ids
         self._row_by_id: dict[int, int] = {}
-        self._rows_cache: tuple[NDArray[np.uintp], NDArray[np.intp], NDArray[np.intp]] | None = None
+        self._rows_cache: (
+            tuple[NDArray[np.uintp], NDArray[np.intp], NDArray[np.intp], NDArray[np.intp] | None]
+            | None
+        ) = None
         self._key_row = np.zeros(0, dtype=np.intp)  # tracked index of each sorted id
         self.mass = np.zeros(0)
         self.moment = np.zeros(0)
@@ -291,8 +294,18 @@ class ForceSolver:
         hit = lookup(self._keys, ids)
         rows = np.nonzero(hit >= 0)[0]
         tracked = self._key_row[hit[rows]]
-        self._rows_cache = (ids, tracked, rows)
+        full = None
+        if len(tracked) == len(self.bodies):
+            full = np.empty(len(tracked), dtype=np.intp)
+            full[tracked] = rows
+        self._rows_cache = (ids, tracked, rows, full)
         return tracked, rows
+
+    def _order(self, ids: NDArray[np.uintp]) -> NDArray[np.intp] | None:
+        """Rows of ``ids`` in tracked order when every tracked body is among them, else None."""
+        self._rows(ids)
+        assert self._rows_cache is not None
+        return self._rows_cache[3]
 
     def before_step(
         self,
@@ -306,6 +319,17 @@ class ForceSolver:
         (N) are the per-body gravity forces included in those forces.
         """
         self._reset_step()
+        order = self._order(ids)
+        if order is not None:
+            # Every tracked body is present: one gather into tracked order, then slices.
+            sub = state[order]
+            if field is not None:
+                self._field[:] = field[order]
+            self._v0[:] = sub[:, 0:3]
+            self._vlast[:] = sub[:, 0:3]
+            self._force[:] = sub[:, 3:6]
+            self._seen[:] = True
+            return
         tracked, rows = self._rows(ids)
         if field is not None:
             self._field[tracked] = field[rows]
@@ -318,14 +342,21 @@ class ForceSolver:
         self, space: pymunk.Space, ids: NDArray[np.uintp], vel: NDArray[np.float64], last: bool
     ) -> None:
         """Accumulate one substep: velocities now (``vel`` rows vx, vy, w), contact impulses."""
-        tracked, rows = self._rows(ids)
-        present = np.zeros(len(self.bodies), dtype=bool)
-        present[tracked] = True
-        self._seen &= present
-        if not last:
-            # Σ v_k over the substeps but the last, for the damping term (see finish()).
-            self._vsum[tracked] += vel[rows]
-        self._vlast[tracked] = vel[rows]
+        order = self._order(ids)
+        if order is not None:
+            sub = vel[order]
+            if not last:
+                # Σ v_k over the substeps but the last, for the damping term (see finish()).
+                self._vsum += sub
+            self._vlast[:] = sub
+        else:
+            tracked, rows = self._rows(ids)
+            present = np.zeros(len(self.bodies), dtype=bool)
+            present[tracked] = True
+            self._seen &= present
+            if not last:
+                self._vsum[tracked] += vel[rows]
+            self._vlast[tracked] = vel[rows]
         if self.contact_split:
             self._accumulate_contacts(space)
 
