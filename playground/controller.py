@@ -303,9 +303,19 @@ class Controller:
         self._gravity_set: Vec | None = None
         self._nullified: str | None = None
 
+        self.removed = False
         if source is not None:
             world.on(Stage.INPUTS, self._read_source)
         world.on(Stage.CONTROL, self._control)
+
+    def remove(self) -> None:
+        """Take the controller out of its world: its grip, body and shape go; its hooks stay
+        registered (the world has no way to drop one) but do nothing from now on."""
+        if self.removed:
+            return
+        self._release(self.world)
+        self.world.remove(self.name)
+        self.removed = True
 
     # -- reading ---------------------------------------------------------------------------------
 
@@ -334,9 +344,13 @@ class Controller:
 
     def _read_source(self, world: World) -> None:
         assert self.source is not None
+        if self.removed:
+            return
         self.intent = self.source.intent(world.time)
 
     def _control(self, world: World) -> None:
+        if self.removed:
+            return
         cfg = self.config
         body = self.body
         dt = world.config.dt

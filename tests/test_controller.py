@@ -164,3 +164,29 @@ def test_same_inputs_give_bit_identical_trajectories() -> None:
         return (player.body.position.x, player.body.position.y, player.body.angle)
 
     assert run() == run()
+
+
+def test_air_steering_never_brakes_and_stays_within_its_budget() -> None:
+    """In the air there is no ground to push on: with no input the horizontal velocity is kept
+    exactly; against the motion the speed changes by at most air_force·T/m."""
+    cfg = ControllerConfig()
+    flight = 0.5
+    for move, bound in ((0.0, 0.0), (-1.0, cfg.air_force * flight / cfg.mass)):
+        world = World()
+        player = Controller(world, "player", (0.0, 100.0), cfg, Script(((0.0, Intent(move=move)),)))
+        player.body.velocity = (2.0, 0.0)
+        world.run(flight)
+        assert player.state is State.AIRBORNE
+        change = abs(player.body.velocity.x - 2.0)
+        assert change <= bound + TOL_DRIVE_REL * bound
+
+
+def test_a_removed_controller_leaves_the_world() -> None:
+    """remove(): the body and shape go and the world keeps stepping without it."""
+    world = flat_world()
+    player = Controller(world, "player", (0.0, 1.0), source=Script(((0.0, Intent(move=1.0)),)))
+    world.run(0.5)
+    player.remove()
+    assert "player" not in world.names
+    world.run(0.5)
+    assert player.removed

@@ -176,6 +176,9 @@ def test_climbing_moves_the_grip_along_the_held_body() -> None:
 CRUSHER_MASS = 200.0
 """kg: its weight (1962 N) is above the default crush threshold."""
 
+FLOOR_SKIN = 0.05
+"""m: radius of the static floor segment: its surface is this far above its centre line."""
+
 TOL_LOAD_REL = 1e-3
 """Resting stack 1.5 s after the drop: the contact's bounce has decayed below 0.1 %."""
 
@@ -224,3 +227,19 @@ def test_a_push_budget_below_the_weight_stays_pinned() -> None:
     assert player.state is State.CRUSHED
     assert abs(player.body.position.x) < PINNED
     assert abs(box.position.x) < PINNED
+
+
+def test_the_hover_never_exceeds_the_legs_budget() -> None:
+    """Hover budget: under a load beyond it the hover pushes with hover_force and the capsule
+    bottoms out; the floor's contact takes the rest."""
+    world = World()
+    world.add_static_segment((-50.0, 0.0), (50.0, 0.0), FLOOR_SKIN)
+    cfg = ControllerConfig(hover_force=2.0 * M * G)
+    player = Controller(world, "player", (0.0, 0.95), cfg)
+    world.add_box("anvil", mass=CRUSHER_MASS, size=(1.0, 0.5), position=(0.0, 2.2))
+    world.run(2.0)
+    assert cfg.hover_force < (M + CRUSHER_MASS) * G
+    assert player.last_forces.hover[1] == cfg.hover_force
+    assert player.state is State.CRUSHED
+    bottom = player.body.position.y - 0.5 * cfg.height
+    assert bottom < FLOOR_SKIN + world.config.collision_slop
