@@ -196,8 +196,8 @@ class Radial:
         r = points - np.asarray(self.center)
         d2 = np.einsum("ij,ij->i", r, r) + self.softening**2
         gm = self.surface_gravity * self.radius**2
-        with np.errstate(divide="ignore", invalid="ignore"):
-            scale = np.where(d2 > 0.0, -gm / (d2 * np.sqrt(d2)), 0.0)
+        # Zero at the exact centre of an unsoftened planet (no direction to pull in).
+        scale = np.divide(-gm, d2 * np.sqrt(d2), out=np.zeros_like(d2), where=d2 > 0.0)
         out: Points = r * scale[:, None]
         return out
 

@@ -164,6 +164,16 @@ class World:
         self._reg_dir = np.zeros((0, 2))
         self._field_force: NDArray[np.float64] | None = None
         self._field_ids = np.zeros(0, dtype=np.uintp)
+        self._field_rows: (
+            tuple[
+                NDArray[np.uintp],
+                NDArray[np.intp],
+                NDArray[np.float64],
+                NDArray[np.float64],
+                NDArray[np.float64],
+            ]
+            | None
+        ) = None
         self._field: GravityField = Uniform()
         self.gravity = gravity if gravity is not None else Uniform()
 
@@ -486,6 +496,7 @@ class World:
             dtype=np.float64,
         ).reshape(-1, 2)
         self._registry_dirty = False
+        self._field_rows = None
 
     def _apply_gravity(self) -> None:
         if self._registry_dirty:
@@ -511,14 +522,21 @@ class World:
             return
         # A field that varies in space: one vectorised evaluation at every dynamic body.
         ids, pos = read_positions(self.space, self._pos_buffer)
-        reg = lookup(self._reg_ids, ids)
-        rows = np.nonzero(reg >= 0)[0]
-        idx = reg[rows]
-        g = apply_rules(
-            self._field.at(pos[rows], self.time), self._reg_scale[idx], self._reg_dir[idx]
-        )
-        self._field_ids = ids[rows]
-        self._field_force = g * self._reg_mass[idx, None]
+        cache = self._field_rows
+        if cache is None or not np.array_equal(cache[0], ids):
+            # Row order only changes when bodies are added, removed, sleep or wake.
+            reg = lookup(self._reg_ids, ids)
+            rows = np.nonzero(reg >= 0)[0]
+            idx = reg[rows]
+            cache = (ids, rows, self._reg_mass[idx, None], self._reg_scale[idx], self._reg_dir[idx])
+            self._field_rows = cache
+        _, rows, mass, scale, direction = cache
+        g = apply_rules(self._field.at(pos[rows], self.time), scale, direction)
+        # One row per body of the read (zero for static, kinematic and unnamed bodies).
+        force = np.zeros((len(ids), 2))
+        force[rows] = g * mass
+        self._field_ids = ids
+        self._field_force = force
 
     def _drive_movers(self) -> None:
         for mover in self._movers:
@@ -533,7 +551,11 @@ class World:
         batched = field_force is not None or bool(self.solver.bodies)
         if batched:
             self._rows.read(self.space)
-            if field_force is not None:
+            if field_force is not None and np.array_equal(self._field_ids, self._rows.ids):
+                field_rows = field_force  # same read order (the usual case): no re-keying
+                self._rows.state[:, 3:5] += field_rows
+                self._write_forces()
+            elif field_force is not None:
                 at = lookup(np.sort(self._field_ids), self._rows.ids)
                 order = np.argsort(self._field_ids)
                 hit = np.nonzero(at >= 0)[0]

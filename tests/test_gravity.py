@@ -207,3 +207,23 @@ def test_field_validation() -> None:
         GravityRule(direction=(0.0, 0.0))
     with pytest.raises(ValueError, match="g"):
         Uniform((math.nan, 0.0))
+
+
+def test_field_follows_bodies_added_and_removed() -> None:
+    """Law: bodies added or removed mid-run under a per-body field still get exactly their field
+    force (a free body's engine force stays zero; its passive force is m·g at its position)."""
+    planet = Radial(center=(0.0, 0.0), radius=10.0)
+    world = World(WorldConfig(), gravity=planet)
+    free_box(world, "a", position=(0.0, 40.0))
+    free_box(world, "b", position=(20.0, 0.0))
+    world.run(0.2)
+    free_box(world, "c", position=(-30.0, 5.0))
+    world.remove("a")
+    for _ in range(30):
+        before = {n: world.body(n).position for n in ("b", "c")}
+        world.step()
+        for name, p in before.items():
+            f = world.forces(name)
+            assert math.hypot(*f.engine) <= TOL_FORCE_ABS
+            expected = 2.0 * planet.at(np.array([[p.x, p.y]]), 0.0)[0]
+            assert np.allclose(f.passive, expected, 0, TOL_FIELD * 10)
