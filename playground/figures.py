@@ -69,13 +69,21 @@ def _record(world: World, seconds: float, probe: Callable[[World], list[float]])
 
 
 @cache
-def platform_run() -> Array:
-    """The moving_platform level, plus a kinematic character placed beside the player.
+def platform_run(acceleration: float = 1.0) -> Array:
+    """The moving_platform level (its platform accelerating at ``acceleration``, m/s², for 1 s),
+    plus a kinematic character placed beside the player.
 
     Columns: t (s), platform x, player x, kinematic character x (m), drive force x (N).
     The kinematic character's velocity is its input (zero): nothing the world does can move it.
     """
-    scene = _scene("moving_platform")
+    from playground.level import find, load
+    from playground.scene import build
+
+    level = load(find("moving_platform"))
+    mover = level.movers[0]
+    path = mover.path.model_copy(update={"acceleration": acceleration})
+    level = level.model_copy(update={"movers": [mover.model_copy(update={"path": path})]})
+    scene = build(level)
     world = scene.world
     kin = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
     kin.position = (0.0, 0.95)
@@ -100,9 +108,9 @@ def ch1_platform_travel() -> float:
     return float(r[-1, 1] - r[0, 1])
 
 
-def ch1_player_drift_cm() -> float:
+def ch1_player_drift_cm(acceleration: float = 1.0) -> float:
     """Largest drift of the force-driven player relative to the platform, cm."""
-    r = platform_run()
+    r = platform_run(acceleration)
     rel = (r[:, 2] - r[:, 1]) - (r[0, 2] - r[0, 1])
     return float(np.max(np.abs(rel)) * 100.0)
 
@@ -110,6 +118,17 @@ def ch1_player_drift_cm() -> float:
 def ch1_predicted_drift_cm() -> float:
     """Drift the drive's time constant predicts: a·τ·T (1 m/s², 0.05 s, 1 s), cm."""
     return 1.0 * ControllerConfig().drive_time * 1.0 * 100.0
+
+
+def ch1_drift_2_cm() -> float:
+    """The exercise: the same drift with the platform accelerating at 2 m/s², cm."""
+    return ch1_player_drift_cm(2.0)
+
+
+def ch1_budget_accel() -> float:
+    """The largest acceleration the drive budget can follow: ground_force / mass, m/s²."""
+    c = ControllerConfig()
+    return c.ground_force / c.mass
 
 
 def ch1_kinematic_drift() -> float:
@@ -155,6 +174,11 @@ def slide_run() -> Array:
         return [*f.engine, *f.contact, *naive]
 
     return _record(world, 1.5, probe)
+
+
+def ch2_ghost_exercise() -> float:
+    """The exercise's ghost force: 10 kg at 6 m/s, damping 0.9, dt = 1/120 s, N."""
+    return 10.0 * (1.0 - float(0.9**DT)) * 6.0 / DT
 
 
 def ch2_max_disagreement() -> float:
@@ -524,6 +548,19 @@ def stability_limit(zeta: float) -> float:
     return lo
 
 
+def max_hover_frequency(zeta: float) -> float:
+    """The highest stable hover frequency at dt = 1/120 s: 2πf·dt < 2ζ, Hz."""
+    return 2.0 * zeta / (2.0 * math.pi * DT)
+
+
+def ch5_max_frequency() -> float:
+    return max_hover_frequency(1.0)
+
+
+def ch5_max_frequency_zeta05() -> float:
+    return max_hover_frequency(0.5)
+
+
 def ch5_limit_zeta1() -> float:
     return stability_limit(1.0)
 
@@ -701,6 +738,15 @@ def accuracy_rows() -> tuple[AccuracyRow, ...]:
     return tuple(rows)
 
 
+def ch7_substeps_30() -> float:
+    """Ring error of reverse integration at dt = 1/30 s with 4 substeps, %."""
+    from playground.bench.accuracy import Point, measure
+    from playground.bench.scenes import Knobs
+
+    (r,) = measure(Point("ring", Knobs(dt=1 / 30, substeps=4), "reverse"), ("none",), repeats=1)
+    return r.error * 100.0
+
+
 def _acc(est: str, dt: float) -> float:
     return next(r.error for r in accuracy_rows() if r.estimator == est and r.dt == dt) * 100.0
 
@@ -731,9 +777,12 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch1_platform_travel,
         ch1_player_drift_cm,
         ch1_predicted_drift_cm,
+        ch1_drift_2_cm,
+        ch1_budget_accel,
         ch1_kinematic_drift,
         ch1_drive_accel,
         ch2_max_disagreement,
+        ch2_ghost_exercise,
         ch2_ghost_force,
         ch2_plank_joint,
         ch2_plank_contact,
@@ -761,6 +810,8 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch5_ratio_below,
         ch5_ratio_above_log10,
         ch5_undamped_per_second,
+        ch5_max_frequency,
+        ch5_max_frequency_zeta05,
         ch5_limit_zeta1,
         ch5_limit_zeta05,
         ch5_drive_peak,
@@ -777,6 +828,7 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch7_reverse_120,
         ch7_reverse_240,
         ch7_fd_120,
+        ch7_substeps_30,
     )
 }
 """Every number the chapters quote, by the name their markers use."""

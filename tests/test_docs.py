@@ -131,3 +131,33 @@ def test_exercise_5_stability_limit_is_two_zeta() -> None:
     assert abs(figures.ch5_limit_zeta1() - 2.0) < TOL_LIMIT
     assert abs(figures.ch5_limit_zeta05() - 1.0) < TOL_LIMIT
     assert figures.ch5_undamped_per_second() > 1.0
+
+
+def test_exercise_1_twice_the_acceleration_twice_the_drift() -> None:
+    """Chapter 1's exercise: at 2 m/s² the drift is a·τ·T = 10 cm."""
+    tau = figures.ControllerConfig().drive_time
+    assert abs(figures.ch1_drift_2_cm() / 100.0 - 2.0 * tau * 1.0) < TOL_DRIFT
+
+
+def test_exercise_4_without_the_spike_stage_the_bounce_check_fails() -> None:
+    """Chapter 4's exercise: with spike_filter off, the bounce level's spike check fails."""
+    from playground.expectations import watch
+    from playground.level import find, load
+    from playground.scene import build
+
+    level = load(find("bounce"))
+    perception = level.tracking.perception.model_copy(update={"spike_filter": False})
+    tracking = level.tracking.model_copy(update={"perception": perception})
+    scene = build(level.model_copy(update={"tracking": tracking}))
+    checks = watch(scene)
+    scene.run(level.settings.seconds)
+    verdict = {r.name: r.passed for r in checks.results()}
+    assert verdict["spikes stay out of the filtered support"] is False
+    assert verdict["no ball gains energy"] is True
+
+
+def test_exercise_5_a_shove_below_the_threshold_is_recovered() -> None:
+    """Chapter 5's exercise: a 140 N·s shove (below the measured threshold) does not knock the
+    player over; one at the threshold does."""
+    assert figures.shove(140.0)[0] is False
+    assert figures.shove(figures.ch5_knockover())[0] is True
