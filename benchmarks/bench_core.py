@@ -27,7 +27,18 @@ from dataclasses import dataclass
 import numpy as np
 import pymunk
 
-from playground import GravityField, Radial, Stage, Uniform, World, WorldConfig, Zone, Zones
+from playground import (
+    GravityField,
+    Perception,
+    Radial,
+    Stage,
+    Uniform,
+    World,
+    WorldConfig,
+    Zone,
+    Zones,
+)
+from playground.filters import FilterChain, Median3, OneEuroFilter
 
 SETTLE_SECONDS = 2.0
 """Simulated time a pile gets to come to rest before it is measured, s."""
@@ -111,6 +122,23 @@ def measure_overhead(n: int, repeats: int, block: int) -> tuple[Overhead, dict[S
     return Overhead(n, statistics.median(bares), statistics.median(worlds)), stages
 
 
+def measure_filter(n: int, repeats: int, block: int) -> float:
+    """Seconds per call of the perception filter alone (median-of-3 + 1€, the default
+    :class:`Perception`) on n rows of 2-vectors: the part of the FILTER stage in filters.py."""
+    cfg = Perception()
+    chain = FilterChain(Median3(), OneEuroFilter(cfg.min_cutoff, cfg.beta, cfg.d_cutoff))
+    rng = np.random.default_rng(0)
+    samples = rng.normal(0.0, 0.1, size=(block, n, 2)) + np.array([0.0, -9.81])
+    chain.filter(samples[0], 1.0 / 120.0)
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for x in samples:
+            chain.filter(x, 1.0 / 120.0)
+        times.append((time.perf_counter() - t0) / block)
+    return statistics.median(times)
+
+
 def measure_fields(n: int, repeats: int, block: int) -> list[tuple[str, float, float]]:
     """(field, uniform s/step, field s/step) medians, untracked piles in alternating blocks."""
     far = 1e6
@@ -143,16 +171,17 @@ def main() -> None:
     print(f"repeats {args.repeats} × block {args.block} steps, dt = 1/120 s\n")
     print(
         "| N | bare space.step (µs) | World.step tracked+perceived (µs) | overhead / bare "
-        "| total ratio | FORCES (µs) | FILTER (µs) |"
+        "| total ratio | FORCES (µs) | FILTER (µs) | of which filters.py (µs) |"
     )
-    print("|---:|---:|---:|---:|---:|---:|---:|")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|")
     for n in args.sizes:
         row, stages = measure_overhead(n, args.repeats, args.block)
         forces = stages.get(Stage.FORCES, math.nan) * 1e6
         filt = stages.get(Stage.FILTER, math.nan) * 1e6
+        chain = measure_filter(n, args.repeats, args.block) * 1e6
         print(
             f"| {n} | {row.bare * 1e6:.0f} | {row.world * 1e6:.0f} | {row.overhead:.3f}× "
-            f"| {row.total:.3f}× | {forces:.0f} | {filt:.0f} |",
+            f"| {row.total:.3f}× | {forces:.0f} | {filt:.0f} | {chain:.0f} |",
             flush=True,
         )
     print(f"\nPer-body gravity fields at N = {args.field_bodies} (untracked):\n")
