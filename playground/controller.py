@@ -300,8 +300,8 @@ class Controller:
         self._still = 0.0
         self._getup_at = 0.0
         self._getup_from = 0.0
-        self._gravity_set: Vec | None = None
-        self._nullified: str | None = None
+        self._gravity_wish: Vec | None = None
+        self._nullify_wish: str | None = None
 
         self.removed = False
         if source is not None:
@@ -753,16 +753,16 @@ class Controller:
     # -- gravity switches ------------------------------------------------------------------------
 
     def _gravity_actions(self, world: World, it: Intent) -> None:
+        """Gravity switches act on a new intent value (a held intent acts once)."""
         if it.restore_gravity:
-            if self._gravity_set is not None:
+            if not world.gravity_rule(self.name).is_default:
                 world.set_gravity_rule(self.name, None)
-                self._gravity_set = None
-        elif it.gravity is not None and it.gravity != self._gravity_set:
+        elif it.gravity is not None and it.gravity != self._gravity_wish:
             world.set_gravity_rule(self.name, GravityRule(direction=it.gravity))
-            self._gravity_set = it.gravity
-        if it.nullify is not None and it.nullify != self._nullified:
+        self._gravity_wish = it.gravity
+        if it.nullify is not None and it.nullify != self._nullify_wish:
             world.set_gravity_rule(it.nullify, GravityRule(scale=0.0))
-            self._nullified = it.nullify
+        self._nullify_wish = it.nullify
 
 
 def _unit_or(x: float, y: float, fallback: Vec) -> Vec:

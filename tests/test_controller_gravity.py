@@ -22,6 +22,9 @@ from playground import (
     World,
 )
 
+G = 9.81
+"""|g| of the world's default field, m/s²."""
+
 FEET_FIRST = math.radians(15.0)
 """Issue 3: the capsule's axis is within 15° of up at touchdown after a 180° flip."""
 
@@ -111,3 +114,23 @@ def test_switching_own_gravity_and_jumping_lands_on_a_moving_creature() -> None:
     assert player.state is State.GROUNDED
     assert player.probe is not None and player.probe.body is beast
     assert (player.body.velocity - beast.velocity).length < SPEED_BOUND
+
+
+def test_own_gravity_switch_and_restore_act_once_per_new_intent() -> None:
+    """A gravity switch sets one's own rule; restore_gravity returns to the field."""
+    world = World()
+    world.add_static_segment((-50.0, 0.0), (50.0, 0.0))
+    script = Script(
+        (
+            (0.5, Intent(gravity=(1.0, 0.0))),
+            (0.6, Intent(gravity=(1.0, 0.0))),
+            (0.7, Intent(restore_gravity=True)),
+        )
+    )
+    player = Controller(world, "player", (0.0, 0.95), source=script)
+    world.run(0.55)
+    assert world.gravity_rule("player").direction == (1.0, 0.0)
+    assert world.gravity_at("player") == (G, 0.0)
+    world.run(0.2)
+    assert world.gravity_rule("player").is_default
+    assert player.intent.restore_gravity
