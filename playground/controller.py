@@ -617,9 +617,10 @@ class Controller:
         ax, ay = -r.y, r.x
         err = math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
         wb = self._wb
-        need = body.moment * (
-            wb * wb * err - 2.0 * cfg.balance_damping * wb * body.angular_velocity
-        )
+        # Damp the spin relative to the ground's, so the body turns with a turning floor (inside
+        # a spinning ring) instead of lagging behind it.
+        spin = body.angular_velocity - (hit.body.angular_velocity if hit is not None else 0.0)
+        need = body.moment * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
         budget = cfg.balance_torque
         torque = max(-budget, min(budget, need))
         touching = hit is not None or self.contact_load > 0.0 or self._touching()
