@@ -96,10 +96,18 @@ class PerceivedGravity:
             raise ValueError(
                 f"specific: expected {self._rows} rows (call resize first), got {len(specific)}"
             )
-        sample = np.where(valid[:, None], -specific, np.nan)
+        sample = -specific if valid.all() else np.where(valid[:, None], -specific, np.nan)
         out = np.asarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
         known = np.isfinite(out).all(axis=1)
-        self.gravity[known] = out[known]
+        # Whole-array writes when every row qualifies (the usual case): boolean-mask gathers and
+        # scatters cost more than the arithmetic.
+        if known.all():
+            self.gravity[:] = out
+        else:
+            self.gravity[known] = out[known]
         norm = np.hypot(self.gravity[:, 0], self.gravity[:, 1])
         strong = known & (norm >= self.config.up_threshold)
-        self.up[strong] = -self.gravity[strong] / norm[strong, None]
+        if strong.all():
+            np.divide(-self.gravity, norm[:, None], out=self.up)
+        else:
+            self.up[strong] = -self.gravity[strong] / norm[strong, None]
