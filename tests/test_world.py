@@ -11,6 +11,7 @@ import pymunk
 import pytest
 
 from playground import (
+    GravityRule,
     Perception,
     RotatingRoom,
     Spin,
@@ -196,3 +197,27 @@ def test_import_does_not_load_pygame() -> None:
     code = "import sys, playground; print('pygame' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
+
+
+def sleepy_world(config: WorldConfig) -> World:
+    world = resting_world(config)
+    world.add_box("floater", mass=1.0, size=(0.5, 0.5), position=(5.0, 5.0))
+    world.track("floater")
+    return world
+
+
+def test_resting_bodies_sleep_while_a_gravity_stage_runs() -> None:
+    """Law: a per-body rule on one body does not keep the rest of the world awake (setting
+    ``space.gravity`` wakes every body, so the world sets it only when it changes)."""
+    world = sleepy_world(WorldConfig(sleep_time=0.2))
+    world.set_gravity_rule("floater", GravityRule(scale=0.0))
+    world.run(1.5)
+    assert world.body("box").is_sleeping
+
+
+def test_resting_bodies_sleep_with_substeps() -> None:
+    """Law: with substeps, re-applying forces between substeps touches only bodies that have a
+    force (setting one restarts a body's idle clock), so resting bodies still fall asleep."""
+    world = sleepy_world(WorldConfig(sleep_time=0.2, substeps=3))
+    world.run(1.5)
+    assert world.body("box").is_sleeping
