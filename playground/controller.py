@@ -30,7 +30,15 @@ from playground.gravity import GravityRule
 from playground.intents import IDLE, Intent, IntentSource
 from playground.world import Stage, World
 
-__all__ = ["Controller", "ControllerConfig", "ControllerForces", "GroundHit", "State"]
+__all__ = [
+    "Controller",
+    "ControllerConfig",
+    "ControllerForces",
+    "GroundHit",
+    "State",
+    "hover_limit",
+    "hover_spring",
+]
 
 Vec = tuple[float, float]
 TWO_PI = 2.0 * math.pi
@@ -64,7 +72,9 @@ class ControllerConfig:
         probe_length: how far the ground probe reaches from the centre along −up, m.
         probe_radius: radius of the probe's swept circle, m.
         hover_frequency: natural frequency of the hover spring, Hz (k = m·(2πf)²).
-        hover_damping: damping ratio of the hover spring (c = 2ζ·m·2πf); 1 is critical.
+        hover_damping: damping ratio of the hover spring (c = 2ζ·m·2πf); 1 is critical, 0 is
+            undamped. The spring is stable while 2πf·dt < :func:`hover_limit` (ζ), which is at
+            least 2.
         hover_force: the legs' budget: the most the hover pushes with, N. Beyond it the capsule
             bottoms out and the contact takes the rest (a hard landing, a crushing load).
         max_slope: steepest walkable ground, rad between its normal and up.
@@ -133,7 +143,14 @@ class ControllerConfig:
     def __post_init__(self) -> None:
         if not isinstance(self.lock_rotation, bool):
             raise ValueError(f"lock_rotation: expected a bool, got {self.lock_rotation!r}")
-        non_negative = {"traction", "air_force", "coyote_time", "jump_buffer", "climb_speed"}
+        non_negative = {
+            "hover_damping",
+            "traction",
+            "air_force",
+            "coyote_time",
+            "jump_buffer",
+            "climb_speed",
+        }
         for f in fields(self):
             if f.name == "lock_rotation":
                 continue
@@ -209,9 +226,11 @@ class Controller:
 
     - **probe**: a circle swept from the centre along −up (``probe_length``) finds the ground.
     - **hover**: a damped spring on the height over the hit point and on the velocity relative to
-      the ground point, ``F = m·g_n + k·(ride − h) − c·v_rel·n`` with ``k = m(2πf)²``,
+      the ground point, ``F = m·g_n + k·(ride − h) − c·v_rel`` with ``k = m(2πf)²``,
       ``c = 2ζm·2πf``, and the gravity into the ground as feed-forward so it rests exactly at ride
-      height. It acts along the ground normal n (on flat ground under an upright player, n = up):
+      height. The spring reads the height the integrator will use and the damper the velocity
+      after the step (:func:`hover_spring`), so it is stable while 2πf·dt < :func:`hover_limit`.
+      It acts along the ground normal n (on flat ground under an upright player, n = up):
       a spring along a tilted up would read a slant distance and sag whenever the player leans
       (perceived up tilts while accelerating), while along n the hover and the drive are exactly a
       contact's normal and friction parts. It only pushes (a floor cannot pull), so jumping off or
@@ -245,10 +264,12 @@ class Controller:
             raise ValueError(f"config: expected a ControllerConfig, got {config!r}")
         finite("angle", angle)
         omega = TWO_PI * config.hover_frequency
-        if omega * world.config.dt >= 2.0:
+        limit = hover_limit(config.hover_damping)
+        if omega * world.config.dt >= limit:
             raise ValueError(
-                f"hover_frequency: 2π·f·dt must stay below 2 for a stable spring; with dt = "
-                f"{world.config.dt} s expected f < {2.0 / (TWO_PI * world.config.dt):.3g} Hz, "
+                f"hover_frequency: 2π·f·dt must stay below 2ζ + 2√(ζ² + 1) = {limit:.4g} "
+                f"(ζ = hover_damping = {config.hover_damping!r}) for a stable spring; with dt = "
+                f"{world.config.dt} s expected f < {limit / (TWO_PI * world.config.dt):.4g} Hz, "
                 f"got {config.hover_frequency!r}"
             )
         self.world = world
@@ -558,7 +579,9 @@ class Controller:
         gvx, gvy = hit.ground_velocity
         v_n = (vx - gvx) * nx + (vy - gvy) * ny
         weight = cfg.mass * max(0.0, -(gx * nx + gy * ny))
-        f = min(cfg.hover_force, max(0.0, weight + self._k * (target - height) - self._c * v_n))
+        wc = world.config
+        spring = hover_spring(self._k, self._c, cfg.mass, target - height, v_n, wc.dt, wc.substeps)
+        f = min(cfg.hover_force, max(0.0, weight + spring))
         if f > 0.0:
             fx, fy = f * nx, f * ny
             world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
@@ -764,6 +787,69 @@ class Controller:
         if it.nullify is not None and it.nullify != self._nullify_wish:
             world.set_gravity_rule(it.nullify, GravityRule(scale=0.0))
         self._nullify_wish = it.nullify
+
+
+def hover_spring(
+    stiffness: float,
+    damping: float,
+    mass: float,
+    error: float,
+    speed: float,
+    dt: float,
+    substeps: int = 1,
+) -> float:
+    """The hover's spring-and-damper force along the ground normal for one step, N.
+
+    ``stiffness`` k (N/m), ``damping`` c (N·s/m), ``mass`` m (kg), ``error`` = ride height −
+    height (m), ``speed`` = the body's velocity along the normal relative to the ground point
+    (m/s), ``dt`` the step (s) split into ``substeps`` equal ``space.step`` calls.
+
+    Why not simply ``k·error − c·speed``: pymunk integrates positions *before* velocities, so a
+    force read from the state before the step is explicit Euler, which gains energy (an undamped
+    spring grows at any dt; a damped one is stable only while 2πf·dt < 2ζ). The force is instead
+    evaluated where the integrator will use it. Over a step of n substeps of h = dt/n with the
+    force held constant (the world re-applies the same force every substep), pymunk gives
+
+        v' = v + dt·a          x' = x + dt·v + dt²·a·(n − 1)/(2n)
+
+    Let the spring read the gap predicted a fraction s of the step ahead, x + s·dt·v (relative to
+    the ground point, which moves with the ground's velocity), and let the damper act on the
+    velocity at the end of the step (implicit, so damping can never feed energy in): with
+    ω² = k/m, b = c·dt/m, w = ω·dt,
+
+        a = −ω²·(x + s·dt·v) − (c/m)·v'   ⇒   a = (−ω²·(x + s·dt·v) − (c/m)·v) / (1 + b)
+
+    (the weight feed-forward cancels gravity along the normal, so v' = v + dt·a here).
+
+    The step's matrix on (x, dt·v) has determinant (1 + w²(1 − s − (n − 1)/(2n))) / (1 + b):
+    with s = (n + 1)/(2n) it is 1/(1 + b), and an undamped spring (b = 0) keeps its area
+    (symplectic: semi-implicit Euler for n = 1, s = 1; the midpoint s → 1/2 for many substeps).
+    Its trace is then 1 + (1 − w²)/(1 + b), and the roots stay inside the unit circle while
+    w² < 4 + 2b, i.e. ``2πf·dt < 2ζ + 2√(ζ² + 1)`` (:func:`hover_limit`): exactly 2 for an
+    undamped spring and more with damping, for every number of substeps. Substeps do not raise
+    it: the force is computed once per step, so the step that counts is dt, not h. At rest
+    (error = speed = 0) the force is exactly 0, so the weight feed-forward alone holds the body.
+
+    >>> hover_spring(100.0, 0.0, 1.0, 0.01, 0.0, 0.01)
+    1.0
+    >>> hover_spring(100.0, 20.0, 1.0, 0.0, 0.0, 0.01, substeps=4)
+    0.0
+    """
+    ahead = (substeps + 1) / (2.0 * substeps) * dt
+    return (stiffness * (error - ahead * speed) - damping * speed) / (1.0 + damping * dt / mass)
+
+
+def hover_limit(damping_ratio: float) -> float:
+    """The largest stable 2πf·dt of the hover spring at damping ratio ζ: 2ζ + 2√(ζ² + 1).
+
+    Derived in :func:`hover_spring`; independent of the substeps.
+
+    >>> hover_limit(0.0)
+    2.0
+    >>> round(hover_limit(1.0), 4)
+    4.8284
+    """
+    return 2.0 * damping_ratio + 2.0 * math.sqrt(damping_ratio * damping_ratio + 1.0)
 
 
 def _unit_or(x: float, y: float, fallback: Vec) -> Vec:

@@ -125,12 +125,13 @@ def test_exercise_4_median_of_3_removes_a_one_step_spike() -> None:
     assert figures.ch4_spike_euro() > 0.5 * figures.SPIKE
 
 
-def test_exercise_5_stability_limit_is_two_zeta() -> None:
-    """Chapter 5: with the force computed before pymunk's step, the spring is stable while
-    2πf·dt < 2ζ (ζ ≤ 1): 2 at critical damping, none at all undamped."""
-    assert abs(figures.ch5_limit_zeta1() - 2.0) < TOL_LIMIT
-    assert abs(figures.ch5_limit_zeta05() - 1.0) < TOL_LIMIT
-    assert figures.ch5_undamped_per_second() > 1.0
+def test_exercise_5_stability_limit_is_two_zeta_plus_two_root() -> None:
+    """Chapter 5: with the spring read where pymunk's integrator uses it and the damper on the
+    velocity after the step, the hover is stable while 2πf·dt < 2ζ + 2√(ζ² + 1), and an undamped
+    one neither gains nor loses energy."""
+    assert abs(figures.ch5_limit_zeta1() - (2.0 + 2.0 * math.sqrt(2.0))) < TOL_LIMIT
+    assert abs(figures.ch5_limit_zeta05() - (1.0 + math.sqrt(5.0))) < TOL_LIMIT
+    assert abs(figures.ch5_undamped_per_second() - 1.0) < TOL_LIMIT
 
 
 def test_exercise_1_twice_the_acceleration_twice_the_drift() -> None:
