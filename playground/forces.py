@@ -207,7 +207,7 @@ class ForceSolver:
         self.contact_normal = np.full((n, 2), np.nan)
         self.constraint = np.full((n, 2), np.nan)
         self._arb_buffer = batch.Buffer()
-        self._reset_step()
+        self._rebuild_keys()
 
     # -- membership -------------------------------------------------------------------------
 
@@ -215,26 +215,27 @@ class ForceSolver:
         """Start tracking a dynamic body; returns its row. Idempotent."""
         if body.body_type != pymunk.Body.DYNAMIC:
             raise ValueError("track: only dynamic bodies have engine forces to recover")
-        for i, b in enumerate(self.bodies):
-            if b is body:
-                return i
+        row = self.row_of(body)
+        if row is not None:
+            return row
         self.bodies.append(body)
-        grow = len(self.bodies)
+        self._row_by_id[body.id] = len(self.bodies) - 1
         for name in ("engine", "support", "specific", "passive", "applied"):
             setattr(self, name, np.vstack([getattr(self, name), np.zeros((1, 2))]))
         for name in ("contact", "contact_normal", "constraint"):
             setattr(self, name, np.vstack([getattr(self, name), np.full((1, 2), np.nan)]))
         self.engine_torque = np.append(self.engine_torque, 0.0)
         self.valid = np.append(self.valid, False)
-        self._rebuild_keys()
-        return grow - 1
+        self._keys_dirty = True
+        return len(self.bodies) - 1
 
     def untrack(self, body: pymunk.Body) -> None:
         """Stop tracking a body (rows after it move up by one)."""
-        idx = next((i for i, b in enumerate(self.bodies) if b is body), None)
+        idx = self.row_of(body)
         if idx is None:
             return
         del self.bodies[idx]
+        self._row_by_id = {b.id: i for i, b in enumerate(self.bodies)}
         for name in (
             "engine",
             "support",
@@ -248,14 +249,22 @@ class ForceSolver:
             "valid",
         ):
             setattr(self, name, np.delete(getattr(self, name), idx, axis=0))
-        self._rebuild_keys()
+        self._keys_dirty = True
 
     def refresh_masses(self) -> None:
         """Re-read mass (kg) and moment (kg·m²) of every tracked body (after a mass change)."""
         self.mass = np.array([b.mass for b in self.bodies], dtype=np.float64)
         self.moment = np.array([b.moment for b in self.bodies], dtype=np.float64)
+        self._locked = np.isinf(self.moment)
+        # [m, m, I] per row, I = 0 where rotation is locked (I = ∞: no torque reading).
+        self._m3 = np.column_stack([self.mass, self.mass, np.where(self._locked, 0.0, self.moment)])
+        self._any_locked = bool(self._locked.any())
+        self._inv_m = (1.0 / self.mass)[:, None]
+        self._scaled: tuple[float, NDArray[np.float64]] | None = None
+        self._weight: tuple[tuple[float, float], NDArray[np.float64]] | None = None
 
     def _rebuild_keys(self) -> None:
+        """Sorted ids, masses and per-step arrays after the tracked set changed (lazily)."""
         ids = np.array([b.id for b in self.bodies], dtype=np.uintp)
         self._row_by_id = {int(body_id): i for i, body_id in enumerate(ids)}
         self._rows_cache = None
@@ -263,6 +272,12 @@ class ForceSolver:
         self._keys = ids[order]
         self._key_row = order.astype(np.intp)
         self.refresh_masses()
+        n = len(self.bodies)
+        self._vsum = np.zeros((n, 3))
+        self._seen = np.zeros(n, dtype=bool)
+        self._contact_j = np.zeros((n, 2))
+        self._contact_jn = np.zeros((n, 2))
+        self._keys_dirty = False
 
     def row_of(self, body: pymunk.Body) -> int | None:
         """The tracked row of a body, or None."""
@@ -270,17 +285,6 @@ class ForceSolver:
         return i if i is not None and self.bodies[i] is body else None
 
     # -- per step -------------------------------------------------------------------------------
-
-    def _reset_step(self) -> None:
-        n = len(self.bodies)
-        self._v0 = np.zeros((n, 3))
-        self._vsum = np.zeros((n, 3))
-        self._vlast = np.zeros((n, 3))
-        self._force = np.zeros((n, 3))
-        self._field = np.zeros((n, 2))
-        self._seen = np.zeros(n, dtype=bool)
-        self._contact_j = np.zeros((n, 2))
-        self._contact_jn = np.zeros((n, 2))
 
     def _rows(self, ids: NDArray[np.uintp]) -> tuple[NDArray[np.intp], NDArray[np.intp]]:
         """(tracked index, row) pairs for the tracked bodies present in ``ids``.
@@ -318,25 +322,35 @@ class ForceSolver:
         ``state`` columns: vx, vy, w, fx, fy, torque (see ``_batch.BodyRows``); ``field`` rows
         (N) are the per-body gravity forces included in those forces.
         """
-        self._reset_step()
+        if self._keys_dirty:
+            self._rebuild_keys()
+        n = len(self.bodies)
+        self._substeps_summed = 0
+        if self.contact_split:
+            self._contact_j.fill(0.0)
+            self._contact_jn.fill(0.0)
         order = self._order(ids)
         if order is not None:
-            # Every tracked body is present: one gather into tracked order, then slices.
+            # Every tracked body is present (the usual case): one gather into tracked order;
+            # v₀ and F are views of it.
             sub = state[order]
+            self._v0 = sub[:, 0:3]
+            self._force = sub[:, 3:6]
+            self._field = None if field is None else field[order]
+            self._seen.fill(True)
+        else:
+            tracked, rows = self._rows(ids)
+            self._v0 = np.zeros((n, 3))
+            self._force = np.zeros((n, 3))
+            self._v0[tracked] = state[rows, 0:3]
+            self._force[tracked] = state[rows, 3:6]
+            self._field = None
             if field is not None:
-                self._field[:] = field[order]
-            self._v0[:] = sub[:, 0:3]
-            self._vlast[:] = sub[:, 0:3]
-            self._force[:] = sub[:, 3:6]
-            self._seen[:] = True
-            return
-        tracked, rows = self._rows(ids)
-        if field is not None:
-            self._field[tracked] = field[rows]
-        self._v0[tracked] = state[rows, 0:3]
-        self._vlast[tracked] = state[rows, 0:3]
-        self._force[tracked] = state[rows, 3:6]
-        self._seen[tracked] = True
+                self._field = np.zeros((n, 2))
+                self._field[tracked] = field[rows]
+            self._seen.fill(False)
+            self._seen[tracked] = True
+        self._vlast = self._v0
 
     def after_substep(
         self, space: pymunk.Space, ids: NDArray[np.uintp], vel: NDArray[np.float64], last: bool
@@ -345,18 +359,21 @@ class ForceSolver:
         order = self._order(ids)
         if order is not None:
             sub = vel[order]
-            if not last:
-                # Σ v_k over the substeps but the last, for the damping term (see finish()).
-                self._vsum += sub
-            self._vlast[:] = sub
         else:
             tracked, rows = self._rows(ids)
             present = np.zeros(len(self.bodies), dtype=bool)
             present[tracked] = True
             self._seen &= present
-            if not last:
-                self._vsum[tracked] += vel[rows]
-            self._vlast[tracked] = vel[rows]
+            sub = self._vlast.copy()
+            sub[tracked] = vel[rows]
+        if not last:
+            # Σ v_k over the substeps but the last, for the damping term (see finish()).
+            if self._substeps_summed == 0:
+                self._vsum[:] = sub
+            else:
+                self._vsum += sub
+            self._substeps_summed += 1
+        self._vlast = sub
         if self.contact_split:
             self._accumulate_contacts(space)
 
@@ -397,44 +414,75 @@ class ForceSolver:
 
         With n substeps of h = dt/n and per-substep velocity damping d = damping**h, summing the
         per-substep impulses telescopes to
-        ``J = m·(v_n − v_0 + (1 − d)·Σ_{k<n} v_k) − (m·g + F)·dt``.
+        ``J = m·(v_n − v_0 + (1 − d)·Σ_{k<n} v_k) − (m·g + F)·dt``; the engine force is J/dt.
+        The arithmetic runs on whole (N, 3) arrays — [x, y, angle] columns with [m, m, I] — so
+        its cost is a dozen numpy calls whatever N is; the ledger's few entries are patched in.
         """
-        h = dt / substeps
-        d = damping**h
-        m = self.mass
-        inertia = self.moment
-        ok = self._seen.copy()
-        if self.check_sleep:
-            ok &= np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
-        dv = self._vlast - self._v0 + (1.0 - d) * (self._vsum + self._v0)
-        g = np.asarray(space_gravity, dtype=np.float64)
-        force = self._force
-        impulse = m[:, None] * dv[:, 0:2] - (m[:, None] * g + force[:, 0:2]) * dt
-        with np.errstate(invalid="ignore"):
-            ang = np.where(np.isinf(inertia), 0.0, inertia * dv[:, 2] - force[:, 2] * dt)
-
-        parts = np.zeros((len(self.bodies), 6))
+        d = damping ** (dt / substeps)
+        dv = self._vlast - self._v0
+        if d != 1.0:
+            dv += (1.0 - d) * (self._v0 + self._vsum if self._substeps_summed else self._v0)
+        # E = m·Δv/dt − F − m·g
+        engine = dv
+        engine *= self._m3_over(dt)
+        engine -= self._force
+        engine[:, 0:2] -= self._weights(space_gravity)
+        if self._any_locked:
+            engine[self._locked, 2] = 0.0
+        passive = self._weights(space_gravity).copy()
+        applied = self._force[:, 0:2].copy()
+        if self._field is not None:
+            passive += self._field
+            applied -= self._field
+        support = engine[:, 0:2].copy()
+        # The ledger's forces are in F: those of PASSIVE and SUPPORT move out of "applied"; what
+        # remains there is APPLIED plus whatever someone put on the body outside the ledger.
+        row_by_id = self._row_by_id
         for body_id, p in ledger.items():  # usually far fewer entries than tracked bodies
-            i = self._row_by_id.get(body_id)
+            i = row_by_id.get(body_id)
             if i is not None:
-                parts[i] = p
-        ledger_total = parts[:, 0:2] + parts[:, 2:4] + parts[:, 4:6]
-        # Whatever was on the body but not in the ledger was put there by someone else: APPLIED.
-        unexplained = force[:, 0:2] - ledger_total - self._field
+                passive[i, 0] += p[0]
+                passive[i, 1] += p[1]
+                support[i, 0] += p[4]
+                support[i, 1] += p[5]
+                applied[i, 0] -= p[0] + p[4]
+                applied[i, 1] -= p[1] + p[5]
+        specific = support * self._inv_m
 
-        # A slice when every row has a reading (the usual case): no fancy-index copies.
-        rows: slice | NDArray[np.intp] = slice(None) if ok.all() else np.nonzero(ok)[0]
-        self.valid = ok
-        self.engine[rows] = impulse[rows] / dt
-        self.engine_torque[rows] = ang[rows] / dt
-        self.passive[rows] = m[rows, None] * g + self._field[rows] + parts[rows, 0:2]
-        self.applied[rows] = parts[rows, 2:4] + unexplained[rows]
-        self.support[rows] = self.engine[rows] + parts[rows, 4:6]
-        self.specific[rows] = self.support[rows] / m[rows, None]
+        ok = self._seen
+        if self.check_sleep:
+            ok = ok & np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
+        if ok.all():
+            self.engine, self.engine_torque = engine[:, 0:2], engine[:, 2]
+            self.passive, self.applied = passive, applied
+            self.support, self.specific = support, specific
+        else:
+            # Rows without a reading keep their last values.
+            rows = np.nonzero(ok)[0]
+            self.engine[rows] = engine[rows, 0:2]
+            self.engine_torque[rows] = engine[rows, 2]
+            self.passive[rows] = passive[rows]
+            self.applied[rows] = applied[rows]
+            self.support[rows] = support[rows]
+            self.specific[rows] = specific[rows]
+        self.valid = ok.copy()
         if self.contact_split:
-            self.contact[rows] = self._contact_j[rows] / dt
-            self.contact_normal[rows] = self._contact_jn[rows] / dt
-            self.constraint[rows] = self.engine[rows] - self.contact[rows]
+            rows_ok = np.nonzero(ok)[0]
+            self.contact[rows_ok] = self._contact_j[rows_ok] / dt
+            self.contact_normal[rows_ok] = self._contact_jn[rows_ok] / dt
+            self.constraint[rows_ok] = self.engine[rows_ok] - self.contact[rows_ok]
+
+    def _m3_over(self, dt: float) -> NDArray[np.float64]:
+        """[m, m, I] / dt, cached while dt and the masses stay the same."""
+        if self._scaled is None or self._scaled[0] != dt:
+            self._scaled = (dt, self._m3 / dt)
+        return self._scaled[1]
+
+    def _weights(self, g: Vec) -> NDArray[np.float64]:
+        """m·g per row (N), cached while g and the masses stay the same."""
+        if self._weight is None or self._weight[0] != g:
+            self._weight = (g, self.mass[:, None] * np.asarray(g, dtype=np.float64))
+        return self._weight[1]
 
     def reading(self, row: int) -> BodyForces:
         """The readings of one tracked row as plain values."""

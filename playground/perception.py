@@ -66,6 +66,8 @@ class PerceivedGravity:
         )
         self.gravity: NDArray[np.float64] = np.zeros((0, 2))
         self.up: NDArray[np.float64] = np.zeros((0, 2))
+        self.up_complete = True
+        """False while some row has not yet felt a reading strong enough to define its up."""
         self._rows = 0
 
     def resize(self, rows: NDArray[np.intp]) -> None:
@@ -80,6 +82,7 @@ class PerceivedGravity:
             gravity[keep] = self.gravity[rows[keep]]
             up[keep] = self.up[rows[keep]]
         self.gravity, self.up, self._rows = gravity, up, len(rows)
+        self.up_complete = bool(np.isfinite(up).all())
 
     def update(
         self,
@@ -96,18 +99,19 @@ class PerceivedGravity:
             raise ValueError(
                 f"specific: expected {self._rows} rows (call resize first), got {len(specific)}"
             )
-        sample = -specific if valid.all() else np.where(valid[:, None], -specific, np.nan)
+        all_valid = bool(valid.all())
+        sample = -specific if all_valid else np.where(valid[:, None], -specific, np.nan)
         out = np.asarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
+        norm = np.hypot(out[:, 0], out[:, 1])
+        # The usual case — every row valid, finite and strong — costs three whole-array
+        # operations; boolean-mask gathers and scatters cost more than the arithmetic.
+        if all_valid and bool((norm >= self.config.up_threshold).all()):
+            self.gravity = out
+            self.up = out / -norm[:, None]
+            self.up_complete = True
+            return
         known = np.isfinite(out).all(axis=1)
-        # Whole-array writes when every row qualifies (the usual case): boolean-mask gathers and
-        # scatters cost more than the arithmetic.
-        if known.all():
-            self.gravity[:] = out
-        else:
-            self.gravity[known] = out[known]
-        norm = np.hypot(self.gravity[:, 0], self.gravity[:, 1])
+        self.gravity[known] = out[known]
         strong = known & (norm >= self.config.up_threshold)
-        if strong.all():
-            np.divide(-self.gravity, norm[:, None], out=self.up)
-        else:
-            self.up[strong] = -self.gravity[strong] / norm[strong, None]
+        self.up[strong] = out[strong] / -norm[strong, None]
+        self.up_complete = bool(np.isfinite(self.up).all())

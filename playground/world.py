@@ -133,12 +133,10 @@ class World:
         config: WorldConfig | None = None,
         gravity: GravityField | Sequence[float] | None = None,
     ) -> None:
-        self.config = config if config is not None else WorldConfig()
+        self._config = config if config is not None else WorldConfig()
         self.space = pymunk.Space()
-        self.space.iterations = self.config.iterations
-        self.space.damping = self.config.damping
-        self.space.collision_slop = self.config.collision_slop
-        self.space.sleep_time_threshold = self.config.sleep_time
+        self._bare = False
+        self._plan_dirty = True
         self.time = 0.0
         self.steps = 0
         self.ledger = ForceLedger()
@@ -147,12 +145,19 @@ class World:
             check_sleep=math.isfinite(self.config.sleep_time),
         )
         self.perceived = PerceivedGravity(self.config.perception)
+        self.config = self._config
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._bodies: dict[str, pymunk.Body] = {}
         self._names: dict[int, str] = {}
         self._rules: dict[int, GravityRule] = {}
         self._movers: list[Mover] = []
-        self._hooks: dict[Stage, list[Hook]] = {s: [] for s in Stage}
+        # One plain list per hook stage (not a dict keyed by Stage: an Enum's hash is Python code
+        # and the step checks these every time).
+        self._inputs: list[Hook] = []
+        self._event_hooks: list[Hook] = []
+        self._controls: list[Hook] = []
+        self._observers: list[Hook] = []
+        self._gravity_stage = False
         self._events: list[tuple[float, int, Hook]] = []
         self._perceivers: set[int] = set()
         self._rows = BodyRows()
@@ -177,6 +182,45 @@ class World:
         self._field: GravityField = Uniform()
         self.gravity = gravity if gravity is not None else Uniform()
 
+    # -- configuration ---------------------------------------------------------------------------
+
+    @property
+    def config(self) -> WorldConfig:
+        """The simulation settings. Replacing them applies the new space settings (dt, substeps,
+        iterations, damping, slop, sleeping, contact split, timing); perception is fixed."""
+        return self._config
+
+    @config.setter
+    def config(self, config: WorldConfig) -> None:
+        if config.perception != self._config.perception:
+            raise ValueError("config.perception: fixed when the world is built")
+        self._config = config
+        self.space.iterations = config.iterations
+        self.space.damping = config.damping
+        self.space.collision_slop = config.collision_slop
+        self.space.sleep_time_threshold = config.sleep_time
+        self.solver.contact_split = config.contact_split
+        self.solver.check_sleep = math.isfinite(config.sleep_time)
+        self._plan_dirty = True
+
+    def _plan(self) -> None:
+        """Decide whether the next steps are bare: nothing but ``space.step``."""
+        self._bare = not (
+            self._inputs
+            or self._events
+            or self._event_hooks
+            or self._gravity_stage
+            or self._movers
+            or self._controls
+            or self.solver.bodies
+            or self._perceivers
+            or self._observers
+            or len(self.ledger)
+            or self._config.timing
+            or self._config.substeps != 1
+        )
+        self._plan_dirty = False
+
     # -- gravity ---------------------------------------------------------------------------------
 
     @property
@@ -191,6 +235,7 @@ class World:
             value = Uniform((float(value[0]), float(value[1])))
         self._field = value
         self.space.gravity = self._space_gravity(self.time)
+        self._update_gravity_stage()
 
     def _space_gravity(self, t: float) -> Vec:
         """What ``space.gravity`` holds: the field if uniform, else zero (forces do the work)."""
@@ -217,6 +262,7 @@ class World:
         else:
             self._rules[body.id] = rule
         self._registry_dirty = True
+        self._update_gravity_stage()
 
     def gravity_rule(self, name: str) -> GravityRule:
         """The body's rule (the default rule if it has none)."""
@@ -252,9 +298,11 @@ class World:
         body = self._bodies.pop(name)
         del self._names[body.id]
         self._rules.pop(body.id, None)
+        self._update_gravity_stage()
         if self.solver.row_of(body) is not None:
             self._untrack(body)
         self._movers = [m for m in self._movers if m.body is not body]
+        self._plan_dirty = True
         self.space.remove(*body.shapes, *body.constraints, body)
         self._registry_dirty = True
 
@@ -326,6 +374,7 @@ class World:
         mover = Mover(self.body(name), path)
         mover.place(self.time)
         self._movers.append(mover)
+        self._plan_dirty = True
         return mover
 
     # -- forces ----------------------------------------------------------------------------------
@@ -341,6 +390,7 @@ class World:
                 self.perceived.resize(np.concatenate([np.arange(old), [-1]]).astype(np.intp))
             if perceive:
                 self._perceivers.add(body.id)
+        self._plan_dirty = True
 
     def _untrack(self, body: pymunk.Body) -> None:
         row = self.solver.row_of(body)
@@ -349,6 +399,7 @@ class World:
         self.solver.untrack(body)
         self.perceived.resize(np.delete(np.arange(n), row).astype(np.intp))
         self._perceivers.discard(body.id)
+        self._plan_dirty = True
 
     def apply_force(
         self,
@@ -362,6 +413,7 @@ class World:
         b = self.body(body) if isinstance(body, str) else body
         if b.body_type == pymunk.Body.DYNAMIC:
             self.ledger.add(b, force, point=point, category=category)
+            self._plan_dirty = True
 
     def apply_impulse(
         self,
@@ -404,7 +456,16 @@ class World:
         """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE)."""
         if stage not in (Stage.INPUTS, Stage.EVENTS, Stage.CONTROL, Stage.OBSERVE):
             raise ValueError(f"stage: hooks run in INPUTS, EVENTS, CONTROL or OBSERVE, not {stage}")
-        self._hooks[stage].append(hook)
+        self._hook_list(stage).append(hook)
+        self._plan_dirty = True
+
+    def _hook_list(self, stage: Stage) -> list[Hook]:
+        return {
+            Stage.INPUTS: self._inputs,
+            Stage.EVENTS: self._event_hooks,
+            Stage.CONTROL: self._controls,
+            Stage.OBSERVE: self._observers,
+        }[stage]
 
     def at(self, t: float, event: Hook) -> None:
         """Run ``event(world)`` once, in the EVENTS stage of the first step starting at or after
@@ -412,27 +473,36 @@ class World:
         finite("t", t)
         self._events.append((t, len(self._events), event))
         self._events.sort(key=lambda e: (e[0], e[1]))
+        self._plan_dirty = True
 
     # -- the step --------------------------------------------------------------------------------
 
     def step(self) -> None:
         """Advance one fixed step of ``config.dt`` seconds through the stages, top-down."""
-        run = self._run_timed if self.config.timing else self._run
+        if self._plan_dirty:
+            self._plan()
+        if self._bare:
+            # A scene that calls for no effect costs what bare pymunk costs.
+            self.space.step(self._config.dt)
+            self.steps += 1
+            self.time = self.steps * self._config.dt
+            return
+        run = self._run_timed if self._config.timing else self._run
         # 1. inputs: scripts and keyboards turn into intents
-        if self._hooks[Stage.INPUTS]:
-            run(Stage.INPUTS, self._run_hooks, Stage.INPUTS)
+        if self._inputs:
+            run(Stage.INPUTS, self._run_hooks, self._inputs)
         # 2. events: scheduled scene changes
-        if (self._events and self._events[0][0] <= self.time + 1e-12) or self._hooks[Stage.EVENTS]:
+        if (self._events and self._events[0][0] <= self.time + 1e-12) or self._event_hooks:
             run(Stage.EVENTS, self._run_events)
         # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
-        if self._needs_gravity_stage():
+        if self._gravity_stage:
             run(Stage.GRAVITY, self._apply_gravity)
         # 4. movers: kinematic bodies get the velocity that reaches their next pose
         if self._movers:
             run(Stage.MOVERS, self._drive_movers)
         # 5. control: controllers sense and put their forces in the ledger
-        if self._hooks[Stage.CONTROL]:
-            run(Stage.CONTROL, self._run_hooks, Stage.CONTROL)
+        if self._controls:
+            run(Stage.CONTROL, self._run_hooks, self._controls)
         # 6. physics: flush forces, step the space (re-applying forces every substep)
         run(Stage.PHYSICS, self._physics)
         # 7. forces: reverse integration for tracked bodies
@@ -441,13 +511,15 @@ class World:
         # 8. filter: perceived gravity for the bodies that perceive
         if self._perceivers:
             run(Stage.FILTER, self._filter)
-        self.ledger.clear()
+        if len(self.ledger):
+            self.ledger.clear()
+            self._plan_dirty = True
         self._field_force = None
-        self.time = (self.steps + 1) * self.config.dt
         self.steps += 1
+        self.time = self.steps * self.config.dt  # not a running sum: no drift over long runs
         # 9. observe: recorders, checks, views — read-only
-        if self._hooks[Stage.OBSERVE]:
-            run(Stage.OBSERVE, self._run_hooks, Stage.OBSERVE)
+        if self._observers:
+            run(Stage.OBSERVE, self._run_hooks, self._observers)
 
     def run(self, seconds: float) -> None:
         """Step for ``seconds`` of simulated time (rounded to whole steps)."""
@@ -467,21 +539,24 @@ class World:
         timing.calls += 1
         timing.last = elapsed
 
-    def _run_hooks(self, stage: Stage) -> None:
-        for hook in self._hooks[stage]:
+    def _run_hooks(self, hooks: list[Hook]) -> None:
+        for hook in hooks:
             hook(self)
 
     def _run_events(self) -> None:
         while self._events and self._events[0][0] <= self.time + 1e-12:
             _, _, event = self._events.pop(0)
             event(self)
-        for hook in self._hooks[Stage.EVENTS]:
+            self._plan_dirty = True
+        for hook in self._event_hooks:
             hook(self)
 
     # -- stage bodies ----------------------------------------------------------------------------
 
-    def _needs_gravity_stage(self) -> bool:
-        return bool(self._rules) or not isinstance(self._field, Uniform)
+    def _update_gravity_stage(self) -> None:
+        """The gravity stage runs only for a non-constant field or bodies with their own rule."""
+        self._gravity_stage = bool(self._rules) or not isinstance(self._field, Uniform)
+        self._plan_dirty = True
 
     def _refresh_registry(self) -> None:
         """Sorted ids, masses and rules of every named dynamic body, for vectorised gravity."""
@@ -607,6 +682,8 @@ class World:
 
     def _filter(self) -> None:
         self.perceived.update(self.solver.specific, self.solver.valid, self.config.dt)
+        if self.perceived.up_complete:
+            return
         # Until a body has felt anything, its up is against the gravity field at it.
         for row in np.nonzero(~np.isfinite(self.perceived.up).all(axis=1))[0]:
             g = self.gravity_at(self._names[self.solver.bodies[row].id])
