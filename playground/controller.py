@@ -191,6 +191,18 @@ class GroundHit:
         distance: from the hit point to the capsule's centre along up, m.
         ground_velocity: velocity of the ground at the hit point, m/s.
         walkable: the normal is within ``max_slope`` of up.
+        frame_velocity: velocity that keeps the capsule's centre fixed to the ground over the
+            coming step, m/s: the ground's velocity plus the chord (R(ω·dt) − 1)·d/dt its turn
+            carries our centre along (d from its centre of gravity; ω × d to first order, like
+            ``ground.velocity_at_world_point(centre)``). Standing still on the ground means
+            moving at this velocity: on a turning floor it is taken at the centre, not at the hit
+            point, which is ride height further out (inside a ring spinning at ω the hit point's
+            speed is ω·R, the centre's ω·(R − ride height)).
+        frame_acceleration: how much ``frame_velocity`` changes per second as the ground turns
+            by ω·dt, m/s²: the centripetal −ω²·d to first order. The ground's own linear and
+            angular acceleration are not known from one step and are left to the drive's
+            feedback. Gravity minus it is the gravity *felt* in the ground's frame: inside a
+            spinning ring, ω²·r outward.
     """
 
     body: pymunk.Body
@@ -199,6 +211,8 @@ class GroundHit:
     distance: float
     ground_velocity: Vec
     walkable: bool
+    frame_velocity: Vec
+    frame_acceleration: Vec
 
 
 @dataclass(frozen=True, slots=True)
@@ -402,7 +416,7 @@ class Controller:
         self._jump_held = it.jump
 
         vx, vy = body.velocity
-        gvx, gvy = hit.ground_velocity if hit is not None else _ZERO
+        gvx, gvy = hit.frame_velocity if hit is not None else _ZERO
         v_up = (vx - gvx) * ux + (vy - gvy) * uy
         if self._rising and (v_up <= 0.0 or hit is None):
             self._rising = False
@@ -468,8 +482,16 @@ class Controller:
         cfg = self.config
         p = self.body.position
         length = cfg.probe_length
-        info = world.space.segment_query_first(
+        # Every hit, then the nearest: with a radius, pymunk 7.3.1's segment_query_first can
+        # return a farther shape (inside a 64-segment ring it reports a neighbouring chord's end
+        # cap, normal 40° off, while the chord under the probe is 7 cm nearer).
+        hits = world.space.segment_query(
             (p.x, p.y), (p.x - ux * length, p.y - uy * length), cfg.probe_radius, self._filter
+        )
+        info = min(
+            (h for h in hits if h.shape is not None and not h.shape.sensor),
+            key=lambda h: h.alpha,
+            default=None,
         )
         if info is None or info.shape is None or info.shape.body is None:
             return None
@@ -477,6 +499,20 @@ class Controller:
         hx, hy = info.point
         nx, ny = info.normal
         gv = ground.velocity_at_world_point((hx, hy))
+        # The ground's frame at our centre, as pymunk's step needs it: positions move with the
+        # velocity before the step, so standing still on a ground turning by θ = ω·dt this step
+        # takes the velocity that carries our centre to where the ground carries that point,
+        # V + (R(θ) − 1)·d/dt (d from the ground's centre of gravity), not the tangent ω × d,
+        # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
+        # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
+        dt = world.config.dt
+        turn = ground.angular_velocity * dt
+        cos_t, sin_t = math.cos(turn), math.sin(turn)
+        cog = ground.local_to_world(ground.center_of_gravity)
+        dx, dy = p.x - cog.x, p.y - cog.y
+        rx = (cos_t * dx - sin_t * dy - dx) / dt
+        ry = (sin_t * dx + cos_t * dy - dy) / dt
+        v = ground.velocity
         return GroundHit(
             body=ground,
             point=(hx, hy),
@@ -484,6 +520,11 @@ class Controller:
             distance=(p.x - hx) * ux + (p.y - hy) * uy,
             ground_velocity=(gv.x, gv.y),
             walkable=nx * ux + ny * uy >= self._cos_slope,
+            frame_velocity=(v.x + rx, v.y + ry),
+            frame_acceleration=(
+                (cos_t * rx - sin_t * ry - rx) / dt,
+                (sin_t * rx + cos_t * ry - ry) / dt,
+            ),
         )
 
     def _contact_load(self, world: World, ux: float, uy: float) -> float:
@@ -555,7 +596,7 @@ class Controller:
     def _is_still(self, hit: GroundHit | None) -> bool:
         cfg = self.config
         vx, vy = self.body.velocity
-        gx, gy = hit.ground_velocity if hit is not None else _ZERO
+        gx, gy = hit.frame_velocity if hit is not None else _ZERO
         spin = self.body.angular_velocity - (hit.body.angular_velocity if hit is not None else 0.0)
         return math.hypot(vx - gx, vy - gy) < cfg.settle_speed and abs(spin) < cfg.settle_spin
 
@@ -576,9 +617,16 @@ class Controller:
         nx, ny = hit.normal
         height = self._height(hit)
         vx, vy = self.body.velocity
-        gvx, gvy = hit.ground_velocity
+        # The height's rate of change over a rigidly moving ground is the velocity relative to the
+        # ground's frame at our centre along n: the hit point's own velocity also carries
+        # ω × (centre − hit), which on a turning floor with a slanted normal (a ring's chord
+        # ends) reads as a spurious normal speed and makes the damper let go.
+        gvx, gvy = hit.frame_velocity
         v_n = (vx - gvx) * nx + (vy - gvy) * ny
-        weight = cfg.mass * max(0.0, -(gx * nx + gy * ny))
+        # The weight felt in the ground's frame (gravity minus the frame's acceleration: inside a
+        # spinning ring, the centrifugal m·ω²·r) as feed-forward: it rests exactly at ride height.
+        ax, ay = hit.frame_acceleration
+        weight = cfg.mass * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
         wc = world.config
         spring = hover_spring(self._k, self._c, cfg.mass, target - height, v_n, wc.dt, wc.substeps)
         f = min(cfg.hover_force, max(0.0, weight + spring))
@@ -607,9 +655,16 @@ class Controller:
         nx, ny = hit.normal
         tx, ty = ny, -nx  # the surface tangent: its normal rotated by −90°
         vx, vy = self.body.velocity
-        gvx, gvy = hit.ground_velocity
+        # Relative to the ground's frame at our centre, not to the hit point: on a turning floor
+        # the hit point, ride height further from the axis, moves faster than standing still.
+        gvx, gvy = hit.frame_velocity
         v_t = (vx - gvx) * tx + (vy - gvy) * ty
-        accel = (move * cfg.max_speed - v_t) / max(cfg.drive_time, dt) - (gx * tx + gy * ty)
+        # Feed-forward: the tangential part of the gravity felt in the ground's frame, so slopes
+        # hold and a turning floor's chords (slopes to the centrifugal force) do not creep.
+        ax, ay = hit.frame_acceleration
+        accel = (move * cfg.max_speed - v_t) / max(cfg.drive_time, dt) - (
+            (gx - ax) * tx + (gy - ay) * ty
+        )
         budget = min(cfg.ground_force, cfg.traction * hover)
         f = max(-budget, min(budget, cfg.mass * accel))
         if f == 0.0:
@@ -669,7 +724,7 @@ class Controller:
     def _jump(self, world: World, ground: GroundHit | None, ux: float, uy: float) -> bool:
         cfg = self.config
         vx, vy = self.body.velocity
-        gvx, gvy = ground.ground_velocity if ground is not None else _ZERO
+        gvx, gvy = ground.frame_velocity if ground is not None else _ZERO
         dv = cfg.jump_speed - ((vx - gvx) * ux + (vy - gvy) * uy)
         self._jump_pressed_at = -math.inf
         self._grounded_at = -math.inf

@@ -14,6 +14,7 @@ import pytest
 
 from playground import Controller, ControllerConfig, Elevator, Intent, Script, State, World
 from playground.controller import hover_limit, hover_spring
+from playground.movers import Spin, ring_room
 from playground.world import Stage, WorldConfig
 
 G = 9.81
@@ -281,3 +282,56 @@ def test_a_removed_controller_leaves_the_world() -> None:
     assert "player" not in world.names
     world.run(0.5)
     assert player.removed
+
+
+TOL_RING_REL = 1e-4
+"""Relative, support against m·ω²·r inside the spinning ring: the step turns the frame by
+θ = ω·dt, so the discrete orbit needs m·ω²·r·(sin(θ/2)/(θ/2))², short by θ²/12 ≈ 1.3e-5."""
+
+TOL_RING_FELT_REL = 0.01
+"""Relative, |perceived gravity| against ω²·r: the 1€ filter's lag on a vector turning at
+1.5 rad/s shortens it by under 0.3 %."""
+
+TOL_RING_DRIFT = 1e-6
+"""rad: the player's bearing relative to the ring's floor over 6 s (the drive's goal is the
+velocity the floor gives the centre, so a settled rider does not move relative to it at all)."""
+
+
+def test_riding_a_spinning_ring_feels_m_v2_over_r_and_keeps_its_place() -> None:
+    """DESIGN.md §5: inside a ring spinning at ω (no gravity) the player is grounded, carried at
+    the floor's angular rate (its drive's goal is the ground's velocity at its centre, ω·r, not
+    the rim's ω·R under its feet), and its support is N = m·v²/r = m·ω²·r toward the centre with r
+    the radius of its centre of mass; its perceived gravity points outward with magnitude ω²·r."""
+    rate, radius = 1.5, 5.0
+    world = World(gravity=(0.0, 0.0))
+    ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    world.add("ring", ring)
+    ring_room(world.space, ring, radius, segments=64)
+    world.add_mover("ring", Spin(rate=rate))
+    r0 = radius - ControllerConfig().ride_height
+    player = Controller(world, "player", (0.0, -r0))
+    player.body.velocity = (rate * r0, 0.0)
+    player.body.angular_velocity = rate
+
+    def bearing() -> float:
+        """The player's polar angle relative to the ring, rad in (−π, π]."""
+        p = player.body.position
+        c, s = math.cos(ring.angle), math.sin(ring.angle)
+        return math.atan2(c * p.y - s * p.x, c * p.x + s * p.y)
+
+    world.run(2.0)
+    start = bearing()
+    for _ in range(round(6.0 / world.config.dt)):
+        world.step()
+        assert player.state is State.GROUNDED
+        p = player.body.position
+        r = math.hypot(p.x, p.y)
+        support = world.forces("player").support
+        assert abs(math.hypot(*support) - M * rate**2 * r) < TOL_RING_REL * M * rate**2 * r
+        # Toward the centre: the support is antiparallel to the position.
+        assert support[0] * p.x + support[1] * p.y < 0.0
+    felt = world.perceived_gravity("player")
+    r = player.body.position.length
+    assert abs(math.hypot(*felt) - rate**2 * r) < TOL_RING_FELT_REL * rate**2 * r
+    assert felt[0] * player.body.position.x + felt[1] * player.body.position.y > 0.0
+    assert abs(bearing() - start) < TOL_RING_DRIFT
