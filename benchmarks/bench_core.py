@@ -47,9 +47,16 @@ BODY_SIZE = 0.5
 """Box side and circle diameter, m."""
 
 
-def build_pile(n: int, gravity: GravityField | None = None, *, timing: bool = False) -> World:
+def build_pile(
+    n: int,
+    gravity: GravityField | None = None,
+    *,
+    timing: bool = False,
+    perception: Perception | None = None,
+) -> World:
     """A pit ``~√n`` bodies wide with n boxes and circles dropped in a grid, then settled."""
-    world = World(WorldConfig(timing=timing), gravity=gravity if gravity is not None else Uniform())
+    config = WorldConfig(timing=timing, perception=perception or Perception())
+    world = World(config, gravity=gravity if gravity is not None else Uniform())
     cols = max(2, math.ceil(math.sqrt(n)))
     width = cols * BODY_SIZE * 1.1
     world.add_static_segment((-0.1, 0.0), (width + 0.1, 0.0), radius=0.1)
@@ -103,10 +110,12 @@ class Overhead:
         return (self.world_min - self.bare_min) / self.bare_min
 
 
-def measure_overhead(n: int, repeats: int, block: int) -> tuple[Overhead, dict[Stage, float]]:
+def measure_overhead(
+    n: int, repeats: int, block: int, perception: Perception
+) -> tuple[Overhead, dict[Stage, float]]:
     """Medians of bare and tracked+perceived steps on one settled pile, in alternating blocks;
     and the per-stage mean times of a separate timed block (s)."""
-    world = build_pile(n)
+    world = build_pile(n, perception=perception)
     world.track(*world.names)
     dt = world.config.dt
     space = world.space
@@ -119,7 +128,9 @@ def measure_overhead(n: int, repeats: int, block: int) -> tuple[Overhead, dict[S
     for _ in range(repeats):
         bares.append(per_step(bare, block))
         worlds.append(per_step(world.step, block))
-    timed = build_pile(n, timing=True)  # a timed twin: timing costs ~1 µs a stage
+    timed = build_pile(
+        n, timing=True, perception=perception
+    )  # a timed twin: timing costs ~1 µs a stage
     timed.track(*timed.names)
     per_step(timed.step, block)
     for t in timed.timings.values():
@@ -178,23 +189,29 @@ def main() -> None:
 
     print(f"python {platform.python_version()}, pymunk {pymunk.version}, numpy {np.__version__}")
     print(f"repeats {args.repeats} × block {args.block} steps, dt = 1/120 s\n")
-    print(
-        "| N | bare space.step (µs) | World.step tracked+perceived (µs) | overhead / bare "
-        "| total ratio | overhead, fastest blocks | FORCES (µs) | FILTER (µs) "
-        "| of which filters.py (µs) |"
+    variants = (
+        ("1€", Perception(spike_filter=False)),
+        ("median-3 + 1€ (default)", Perception()),
     )
-    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print(
+        "| N | filter | bare space.step (µs) | World.step tracked+perceived (µs) "
+        "| overhead / bare | total ratio | overhead, fastest blocks | FORCES (µs) "
+        "| FILTER (µs) |"
+    )
+    print("|---:|---|---:|---:|---:|---:|---:|---:|---:|")
     for n in args.sizes:
-        row, stages = measure_overhead(n, args.repeats, args.block)
-        forces = stages.get(Stage.FORCES, math.nan) * 1e6
-        filt = stages.get(Stage.FILTER, math.nan) * 1e6
+        for label, perception in variants:
+            row, stages = measure_overhead(n, args.repeats, args.block, perception)
+            forces = stages.get(Stage.FORCES, math.nan) * 1e6
+            filt = stages.get(Stage.FILTER, math.nan) * 1e6
+            print(
+                f"| {n} | {label} | {row.bare * 1e6:.0f} | {row.world * 1e6:.0f} "
+                f"| {row.overhead:.3f}× | {row.total:.3f}× | {row.overhead_min:.3f}× "
+                f"| {forces:.0f} | {filt:.0f} |",
+                flush=True,
+            )
         chain = measure_filter(n, args.repeats, args.block) * 1e6
-        print(
-            f"| {n} | {row.bare * 1e6:.0f} | {row.world * 1e6:.0f} | {row.overhead:.3f}× "
-            f"| {row.total:.3f}× | {row.overhead_min:.3f}× | {forces:.0f} | {filt:.0f} "
-            f"| {chain:.0f} |",
-            flush=True,
-        )
+        print(f"|  | filters.py chain alone | | | | | | | {chain:.0f} |", flush=True)
     print(f"\nPer-body gravity fields at N = {args.field_bodies} (untracked):\n")
     print(
         "| field | uniform space.gravity (µs) | per-body field (µs) | ratio "

@@ -103,15 +103,15 @@ class PerceivedGravity:
         sample = -specific if all_valid else np.where(valid[:, None], -specific, np.nan)
         out = np.asarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
         norm = np.hypot(out[:, 0], out[:, 1])
+        strong = norm >= self.config.up_threshold  # False for NaN rows
         # The usual case — every row valid, finite and strong — costs three whole-array
-        # operations; boolean-mask gathers and scatters cost more than the arithmetic.
-        if all_valid and bool((norm >= self.config.up_threshold).all()):
+        # operations; otherwise masked in-place writes (no gathers, no scatters).
+        if all_valid and bool(strong.all()):
             self.gravity = out
             self.up = out / -norm[:, None]
             self.up_complete = True
             return
-        known = np.isfinite(out).all(axis=1)
-        self.gravity[known] = out[known]
-        strong = known & (norm >= self.config.up_threshold)
-        self.up[strong] = out[strong] / -norm[strong, None]
-        self.up_complete = bool(np.isfinite(self.up).all())
+        np.copyto(self.gravity, out, where=np.isfinite(norm)[:, None])
+        np.divide(out, -norm[:, None], out=self.up, where=strong[:, None])
+        if not self.up_complete:
+            self.up_complete = bool(np.isfinite(self.up).all())
