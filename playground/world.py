@@ -580,20 +580,19 @@ class World:
         if self.space.gravity != g_space:
             self.space.gravity = g_space  # setting it wakes every body: only when it changes
         if self._field.uniform:
-            # Only bodies with their own rule need a correction force: m·(g_rule − g_space).
+            # Only bodies with their own rule need a correction force: m·(g_rule − g_space), in
+            # plain floats (a handful of bodies: cheaper than numpy's per-call cost).
+            gx, gy = g_space
+            magnitude = math.hypot(gx, gy)
             for body_id, rule in self._rules.items():
                 body = self._bodies[self._names[body_id]]
-                g = apply_rules(
-                    np.array([g_space]),
-                    np.array([rule.scale]),
-                    np.array([rule.direction or (np.nan, np.nan)]),
-                )[0]
+                if rule.direction is None:
+                    rx, ry = rule.scale * gx, rule.scale * gy
+                else:
+                    rx = rule.scale * magnitude * rule.direction[0]
+                    ry = rule.scale * magnitude * rule.direction[1]
                 m = body.mass
-                self.ledger.add(
-                    body,
-                    (m * (g[0] - g_space[0]), m * (g[1] - g_space[1])),
-                    category=Category.PASSIVE,
-                )
+                self.ledger.add(body, (m * (rx - gx), m * (ry - gy)), category=Category.PASSIVE)
             return
         # A field that varies in space: one vectorised evaluation at every dynamic body.
         ids, pos = read_positions(self.space, self._pos_buffer)
