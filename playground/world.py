@@ -429,26 +429,23 @@ class World:
 
     def forces(self, name: str) -> BodyForces:
         """The last readings of a tracked body."""
-        row = self.solver.row_of(self.body(name))
-        if row is None:
-            raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
-        return self.solver.reading(row)
+        return self.solver.reading(self._tracked_row(name))
 
     def perceived_gravity(self, name: str) -> Vec:
         """The filtered perceived gravity of a tracked body, m/s²."""
-        row = self.solver.row_of(self.body(name))
-        if row is None:
-            raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
-        g = self.perceived.gravity[row]
+        g = self.perceived.gravity[self._tracked_row(name)]
         return (float(g[0]), float(g[1]))
 
     def perceived_up(self, name: str) -> Vec:
         """Unit vector opposite the perceived gravity, held through weak readings."""
+        u = self.perceived.up[self._tracked_row(name)]
+        return (float(u[0]), float(u[1]))
+
+    def _tracked_row(self, name: str) -> int:
         row = self.solver.row_of(self.body(name))
         if row is None:
             raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
-        u = self.perceived.up[row]
-        return (float(u[0]), float(u[1]))
+        return row
 
     # -- hooks and events ------------------------------------------------------------------------
 
