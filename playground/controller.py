@@ -313,6 +313,7 @@ class Controller:
         self._c = 2.0 * config.hover_damping * config.mass * omega
         self._cos_slope = math.cos(config.max_slope)
         self._wb = TWO_PI * config.balance_frequency
+        self._up_threshold = world.config.perception.up_threshold
 
         self.intent: Intent = IDLE
         self.state = State.AIRBORNE
@@ -401,6 +402,11 @@ class Controller:
             ux, uy = world.perceived_up(self.name)
             if not (math.isfinite(ux) and math.isfinite(uy)):
                 ux, uy = _unit_or(-gx, -gy, self.up)
+            elif math.hypot(*world.perceived_gravity(self.name)) < self._up_threshold:
+                # Just caught after a free fall: the inner ear still holds the up from before the
+                # fall (after a gravity flip, the opposite one) until the new support has built
+                # up a reading: keep the up we fell with meanwhile.
+                ux, uy = self.up
         else:
             ux, uy = _unit_or(-gx, -gy, self.up)
         self.up = (ux, uy)

@@ -631,9 +631,14 @@ def ch5_knockover() -> float:
 @cache
 def flip_run() -> Array:
     """The gravity_flip level. Columns: t (s), height y (m), tilt against up (degrees),
-    perceived gravity y (m/s²), grounded (1/0)."""
+    perceived gravity y (m/s²), grounded (1/0), the capsule touching something (1/0)."""
     scene = _scene("gravity_flip")
     player = scene.controllers["player"]
+
+    def touching() -> float:
+        found: list[pymunk.Arbiter] = []
+        player.body.each_arbiter(found.append)
+        return 1.0 if found else 0.0
 
     def probe(w: World) -> list[float]:
         return [
@@ -641,33 +646,44 @@ def flip_run() -> Array:
             math.degrees(scene.tilt("player")),
             w.perceived_gravity("player")[1],
             1.0 if player.state is State.GROUNDED else 0.0,
+            touching(),
         ]
 
     return _record(scene.world, scene.level.settings.seconds, probe)
 
 
-def _after_flight(r: Array) -> Array:
-    """Rows from the first grounded step after the player left the floor."""
-    flying = np.nonzero((r[:, 0] > 1.0) & (r[:, 4] == 0.0))[0][0]
-    back = flying + np.nonzero(r[flying:, 4] == 1.0)[0][0]
-    return r[back:]
+FLIP_TIME = 1.0
+"""s: when gravity_flip turns gravity over."""
 
 
-def ch6_probe_tilt() -> float:
-    """Tilt against up when the probe first finds the ceiling, degrees."""
-    return float(_after_flight(flip_run())[0, 2])
+def _in_flight(r: Array) -> Array:
+    """Rows from the first step after the flip at which the player is off the floor."""
+    return r[np.nonzero((r[:, 0] > FLIP_TIME) & (r[:, 4] == 0.0))[0][0] :]
 
 
-def ch6_ride_tilt() -> float:
-    """Tilt against up when the player first reaches its ride height under the ceiling, deg."""
-    r = _after_flight(flip_run())
-    return float(r[r[:, 1] >= 3.0 - 1e-3][0, 2])
+def ch6_leave_time() -> float:
+    """Time after the flip at which the floor lets go of the player, s."""
+    return float(_in_flight(flip_run())[0, 0] - FLIP_TIME)
 
 
 def ch6_upright_time() -> float:
-    """Time after the flip at which the tilt first drops below 15°, s."""
-    r = _after_flight(flip_run())
-    return float(r[r[:, 2] < 15.0][0, 0] - 1.0)
+    """Time after the flip at which the tilt first drops below 15° in the air, s (once its up
+    has turned to the field: from the most tilted step on)."""
+    r = _in_flight(flip_run())
+    r = r[int(np.argmax(r[:, 2])) :]
+    return float(r[r[:, 2] < 15.0][0, 0] - FLIP_TIME)
+
+
+def ch6_probe_tilt() -> float:
+    """Tilt against up when the probe first finds the ceiling (the hover catches it), degrees."""
+    r = _in_flight(flip_run())
+    return float(r[r[:, 4] == 1.0][0, 2])
+
+
+def ch6_contact_tilt() -> float:
+    """Tilt against up when the capsule's body first touches the ceiling, degrees."""
+    r = _in_flight(flip_run())
+    return float(r[r[:, 5] == 1.0][0, 2])
 
 
 def ch6_final_perceived() -> float:
@@ -824,9 +840,10 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch5_drive_peak,
         ch5_time_to_90,
         ch5_knockover,
-        ch6_probe_tilt,
-        ch6_ride_tilt,
+        ch6_leave_time,
         ch6_upright_time,
+        ch6_probe_tilt,
+        ch6_contact_tilt,
         ch6_final_perceived,
         ch6_null_perceived,
         ch6_null_speed_change,
@@ -1011,9 +1028,9 @@ def fig_ch6(path: Path) -> Path:
     n = null_run()
     fig, (a, b, c) = _axes(3, height=2.6)
     a.plot(r[:, 0], r[:, 1])
-    a.axhline(3.0, color="k", ls="--", lw=1, label="ride height under the ceiling")
+    a.axhline(r[-1, 1], color="k", ls="--", lw=1, label="ride height under the ceiling")
     a.set_ylabel("height of the centre (m)")
-    a.set_title("gravity_flip: gravity turns over at t = 1 s")
+    a.set_title(f"gravity_flip: gravity turns over at t = {FLIP_TIME:g} s")
     a.legend()
     b.plot(r[:, 0], r[:, 2], label="tilt from up")
     b.axhline(15.0, color="k", ls="--", lw=1, label="15°")

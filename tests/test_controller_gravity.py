@@ -38,14 +38,22 @@ TOL_RIDE = 1e-3
 """Metres: standing at ride height on the new floor after the landing has damped out."""
 
 
+def touching(player: Controller) -> bool:
+    """The capsule's shape is in contact with something."""
+    found: list[pymunk.Arbiter] = []
+    player.body.each_arbiter(found.append)
+    return bool(found)
+
+
 def axis_angle(player: Controller) -> float:
     """Angle between the capsule's axis and the controller's up, rad."""
     return abs(player.tilt)
 
 
 def test_flipped_gravity_lands_feet_first_on_the_old_ceiling() -> None:
-    """Up follows the field in the air: after a 180° flip the player rights itself while falling,
-    lands feet first on the old ceiling and stands there."""
+    """Up follows the field in the air: after a 180° flip the floor lets go at once, the player
+    rights itself while falling and lands feet first on the old ceiling (within 15° of up both
+    when its hover catches it and when its body first touches the ceiling) and stands there."""
     ceiling = 7.0
     world = World(gravity=RotatingRoom(turns=(Turn(1.0, math.pi),)))
     world.add_static_segment((-20.0, 0.0), (20.0, 0.0), SKIN)
@@ -53,15 +61,21 @@ def test_flipped_gravity_lands_feet_first_on_the_old_ceiling() -> None:
     player = Controller(world, "player", (0.0, 0.95))
     world.run(1.0)
     assert player.state is State.GROUNDED
-    touchdown_tilt = None
+    catch_tilt = contact_tilt = None
     left = False
     while world.time < 4.0:
         world.step()
         left = left or player.state is State.AIRBORNE
-        if left and touchdown_tilt is None and player.state is State.GROUNDED:
-            touchdown_tilt = axis_angle(player)
+        if left and catch_tilt is None and player.state is State.GROUNDED:
+            # The hover catches it: the probe has found the ceiling.
+            catch_tilt = axis_angle(player)
             assert player.probe is not None and player.probe.normal[1] < 0.0
-    assert touchdown_tilt is not None and touchdown_tilt < FEET_FIRST
+        if contact_tilt is None and touching(player):
+            # Its body touches the ceiling: the honest touchdown of the capsule itself.
+            contact_tilt = axis_angle(player)
+            assert player.body.position.y > ceiling / 2.0
+    assert catch_tilt is not None and catch_tilt < FEET_FIRST
+    assert contact_tilt is not None and contact_tilt < FEET_FIRST
     assert player.state is State.GROUNDED
     assert axis_angle(player) < STANDING_TILT
     assert player.up[1] < -0.999
