@@ -599,10 +599,13 @@ class World:
             reg = lookup(self._reg_ids, ids)
             rows = np.nonzero(reg >= 0)[0]
             idx = reg[rows]
-            cache = (ids, rows, self._reg_mass[idx, None], self._reg_scale[idx], self._reg_dir[idx])
+            mass = np.repeat(self._reg_mass[idx], 2).reshape(-1, 2)  # contiguous [m, m] rows
+            cache = (ids, rows, mass, self._reg_scale[idx], self._reg_dir[idx])
             self._field_rows = cache
         _, rows, mass, scale, direction = cache
-        g = apply_rules(self._field.at(pos[rows], self.time), scale, direction)
+        g = self._field.at(np.take(pos, rows, axis=0), self.time)
+        if self._rules:
+            g = apply_rules(g, scale, direction)
         # One row per body of the read (zero for static, kinematic and unnamed bodies).
         force = np.zeros((len(ids), 2))
         force[rows] = g * mass
