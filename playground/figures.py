@@ -31,7 +31,11 @@ from playground.filters import (
     OneEuroFilter,
 )
 from playground.intents import Intent, Script
-from playground.movers import Spin, ring_room
+from playground.level import Box as BoxShape
+from playground.level import Level, RotatingGravity, Turn
+from playground.level import Ring as RingShape
+from playground.level import Spin as SpinPath
+from playground.level import Waypoints as WaypointsPath
 from playground.scene import Scene
 from playground.world import Stage, World, WorldConfig
 
@@ -258,45 +262,157 @@ def ch3_room_final_error() -> float:
     return float(abs(r[-1, 2] - r[-1, 1]))
 
 
-RING_RADIUS = 5.0
-"""Inner radius of chapter 3's ring, m."""
-
-
 @cache
-def ring_reading(rate: float) -> tuple[float, float]:
-    """A 10 kg box carried round the inside of a ring spinning at ``rate`` (rad/s), no gravity.
+def _level(name: str) -> Level:
+    """A shipped level, loaded and validated once per process."""
+    from playground.level import find, load
 
-    Returns (|perceived gravity|, ω²·r at its centre) after 3 s, m/s².
-    """
-    world = World(gravity=(0.0, 0.0))
-    ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    world.add("ring", ring)
-    ring_room(world.space, ring, RING_RADIUS, segments=64)
-    world.add_mover("ring", Spin(rate=rate))
-    r0 = RING_RADIUS - 0.5
-    box = world.add_box("box", mass=10.0, size=(0.5, 1.0), position=(0.0, -r0))
-    box.velocity = (rate * r0, 0.0)
-    box.angular_velocity = rate
-    world.track("box")
-    world.run(3.0)
-    return float(np.hypot(*world.perceived_gravity("box"))), rate**2 * float(
-        np.hypot(*box.position)
+    return load(find(name))
+
+
+def _room_turn() -> Turn:
+    """rotating_room's (first) scheduled turn of its field."""
+    gravity = _level("rotating_room").gravity
+    if not isinstance(gravity, RotatingGravity) or not gravity.turns:
+        raise TypeError("rotating_room: expected a rotating field with a scheduled turn")
+    return gravity.turns[0]
+
+
+def ch3_room_turn() -> float:
+    """How far rotating_room's field turns, rad."""
+    return _room_turn().angle
+
+
+def ch3_room_turn_deg() -> float:
+    """The same turn in degrees."""
+    return math.degrees(ch3_room_turn())
+
+
+def ch3_room_turn_time() -> float:
+    """How long rotating_room's field takes to turn, s."""
+    return _room_turn().duration
+
+
+def _ring(rate: float | None = None) -> Level:
+    """The spinning_ring level, with its ring spinning at ``rate`` (rad/s) if given; the player
+    starts carried by the floor at that rate (velocity ω·r, spin ω), as the level itself does."""
+    level = _level("spinning_ring")
+    if rate is None:
+        return level
+    (mover,) = level.movers
+    (actor,) = level.actors
+    r0 = math.hypot(*actor.position)
+    path = mover.path.model_copy(update={"rate": rate})
+    actor = actor.model_copy(update={"velocity": (rate * r0, 0.0), "angular_velocity": rate})
+    return level.model_copy(
+        update={"movers": [mover.model_copy(update={"path": path})], "actors": [actor]}
     )
 
 
-def ch3_ring_perceived() -> float:
-    """|Perceived gravity| in the ring at 1.5 rad/s, m/s²."""
-    return ring_reading(1.5)[0]
+RING_SETTLED = 2.0
+"""s: readings in the ring are averaged from here to the level's end (the 1€ filter has settled;
+the level's own perceived-gravity check uses the same window)."""
+
+
+@cache
+def ring_run(rate: float) -> Array:
+    """The spinning_ring level with its ring spinning at ``rate`` (rad/s), no gravity.
+
+    Columns: t (s), |perceived gravity| (m/s²), ω²·r at the player's centre (m/s²), |support| (N).
+    """
+    from playground.scene import build
+
+    scene = build(_ring(rate))
+
+    def probe(w: World) -> list[float]:
+        r = float(np.hypot(*w.body("player").position))
+        return [
+            float(np.hypot(*w.perceived_gravity("player"))),
+            rate**2 * r,
+            float(np.hypot(*w.forces("player").support)),
+        ]
+
+    return _record(scene.world, scene.level.settings.seconds, probe)
+
+
+def ring_reading(rate: float) -> tuple[float, float]:
+    """(|perceived gravity|, ω²·r at the player's centre) in the ring spinning at ``rate``
+    (rad/s), each averaged over the settled part of the level, m/s²."""
+    r = ring_run(rate)
+    settled = r[:, 0] >= RING_SETTLED
+    return float(np.mean(r[settled, 1])), float(np.mean(r[settled, 2]))
+
+
+def ch3_ring_rim() -> float:
+    """Inner radius of spinning_ring's ring, m."""
+    (mover,) = _ring().movers
+    shape = mover.shapes[0]
+    if not isinstance(shape, RingShape):
+        raise TypeError(f"spinning_ring: expected a ring shape, got {shape.kind!r}")
+    return shape.radius
+
+
+def ch3_ring_segments() -> float:
+    """How many flat segments make spinning_ring's floor."""
+    (mover,) = _ring().movers
+    shape = mover.shapes[0]
+    if not isinstance(shape, RingShape):
+        raise TypeError(f"spinning_ring: expected a ring shape, got {shape.kind!r}")
+    return float(shape.segments)
+
+
+def ch3_ring_rate() -> float:
+    """spinning_ring's spin ω, rad/s."""
+    (mover,) = _ring().movers
+    if not isinstance(mover.path, SpinPath):
+        raise TypeError(f"spinning_ring: expected a spin path, got {mover.path.kind!r}")
+    return mover.path.rate
+
+
+def ch3_ring_centre() -> float:
+    """Radius r of the player's centre at the start of spinning_ring, m."""
+    return math.hypot(*_ring().actors[0].position)
+
+
+def ch3_ring_centre_run() -> float:
+    """Mean radius of the player's centre in spinning_ring once settled, m."""
+    rate = ch3_ring_rate()
+    r = ring_run(rate)
+    return float(np.mean(r[r[:, 0] >= RING_SETTLED, 2])) / rate**2
 
 
 def ch3_ring_expected() -> float:
-    """ω²·r in the ring at 1.5 rad/s, m/s²."""
-    return ring_reading(1.5)[1]
+    """ω²·r with the level's ω and r, m/s²."""
+    return ch3_ring_rate() ** 2 * ch3_ring_centre()
+
+
+def ch3_ring_perceived() -> float:
+    """|Perceived gravity| in spinning_ring, averaged once settled, m/s²."""
+    return ring_reading(ch3_ring_rate())[0]
+
+
+def ch3_ring_mass() -> float:
+    """The player's mass in spinning_ring, kg."""
+    from playground.scene import build
+
+    return build(_ring()).world.body("player").mass
+
+
+def ch3_ring_support_expected() -> float:
+    """N = m·ω²·r with the level's m, ω and r, N."""
+    return ch3_ring_mass() * ch3_ring_expected()
+
+
+def ch3_ring_support() -> float:
+    """|Support| the solver reads in spinning_ring, averaged once settled, N."""
+    r = ring_run(ch3_ring_rate())
+    return float(np.mean(r[r[:, 0] >= RING_SETTLED, 3]))
 
 
 def ch3_ring_ratio() -> float:
-    """Perceived gravity at 3 rad/s over that at 1.5 rad/s (twice the spin)."""
-    return ring_reading(3.0)[0] / ring_reading(1.5)[0]
+    """Perceived gravity at twice the level's spin over that at its spin."""
+    rate = ch3_ring_rate()
+    return ring_reading(2.0 * rate)[0] / ring_reading(rate)[0]
 
 
 # -- chapter 4: filtering a spiky force ----------------------------------------------------------
@@ -726,6 +842,125 @@ def ch6_air_budget_bound() -> float:
     return c.air_force / c.mass * 1.5
 
 
+LEAP_TIME = 1.0
+"""s: when gravity_leap's player switches its gravity and jumps."""
+
+
+@cache
+def leap_run(speed: float | None = None) -> Array:
+    """The gravity_leap level, its creature flying at ``speed`` (m/s) if given.
+
+    Columns: t (s), standing on the creature (1/0: grounded, its probe on the creature), the
+    player's centre relative to the creature's x, y (m), its speed relative to the creature (m/s),
+    tilt against its up (degrees), perceived gravity x, y (m/s²).
+    """
+    from playground.scene import build
+
+    level = _level("gravity_leap")
+    if speed is not None:
+        (mover,) = level.movers
+        path = mover.path.model_copy(update={"speed": speed})
+        level = level.model_copy(update={"movers": [mover.model_copy(update={"path": path})]})
+    scene = build(level)
+    player = scene.controllers["player"]
+    beast = scene.world.body("beast")
+
+    def probe(w: World) -> list[float]:
+        hit = player.probe
+        on = player.state is State.GROUNDED and hit is not None and hit.body is beast
+        rel = player.body.position - beast.position
+        return [
+            1.0 if on else 0.0,
+            rel.x,
+            rel.y,
+            (player.body.velocity - beast.velocity).length,
+            math.degrees(scene.tilt("player")),
+            *w.perceived_gravity("player"),
+        ]
+
+    return _record(scene.world, scene.level.settings.seconds, probe)
+
+
+def _landing(r: Array) -> Array:
+    """The first row at which the player stands on the creature."""
+    row: Array = r[np.nonzero(r[:, 1] == 1.0)[0][0]]
+    return row
+
+
+def ch6_leap_land_time() -> float:
+    """Time from the leap to standing on the creature, s."""
+    return float(_landing(leap_run())[0] - LEAP_TIME)
+
+
+def ch6_leap_land_x() -> float:
+    """Where the player lands: its x relative to the creature's centre, m."""
+    return float(_landing(leap_run())[2])
+
+
+def ch6_leap_end_x() -> float:
+    """The player's x relative to the creature's centre at the end, m."""
+    return float(leap_run()[-1, 2])
+
+
+def ch6_leap_ride_y() -> float:
+    """The player's y relative to the creature's centre at the end, m (below it: negative)."""
+    return float(leap_run()[-1, 3])
+
+
+def ch6_leap_relative_speed() -> float:
+    """The player's speed relative to the creature at the end, m/s."""
+    return float(leap_run()[-1, 4])
+
+
+def ch6_leap_speed() -> float:
+    """How fast gravity_leap's creature flies, m/s."""
+    (mover,) = _level("gravity_leap").movers
+    if not isinstance(mover.path, WaypointsPath):
+        raise TypeError(f"gravity_leap: expected a waypoints path, got {mover.path.kind!r}")
+    return mover.path.speed
+
+
+def leap_half_width() -> float:
+    """Half the width of gravity_leap's creature, m: the player stands on it while its x relative
+    to the creature's centre is within ± this."""
+    (mover,) = _level("gravity_leap").movers
+    shape = mover.shapes[0]
+    if not isinstance(shape, BoxShape):
+        raise TypeError(f"gravity_leap: expected a box creature, got {shape.kind!r}")
+    return 0.5 * shape.size[0]
+
+
+def ch6_leap_perceived() -> float:
+    """|Perceived gravity| at the end, m/s²."""
+    return float(np.hypot(*leap_run()[-1, 6:8]))
+
+
+def ch6_leap_slope() -> float:
+    """Angle between the perceived gravity at the end and the creature's underside's normal
+    (+y), degrees: how steep a slope that flat underside is to the player."""
+    gx, gy = leap_run()[-1, 6:8]
+    return math.degrees(math.atan2(abs(gx), gy))
+
+
+LEAP_FAST = 2.0
+"""m/s: the exercise's creature, twice as fast as the level's."""
+
+
+def ch6_leap_fast_land_time() -> float:
+    """The exercise: time from the leap to standing on a creature flying at LEAP_FAST, s."""
+    return float(_landing(leap_run(LEAP_FAST))[0] - LEAP_TIME)
+
+
+def ch6_leap_fast_land_x() -> float:
+    """The exercise: where the player lands on a creature flying at LEAP_FAST, m."""
+    return float(_landing(leap_run(LEAP_FAST))[2])
+
+
+def ch6_leap_fast_end_x() -> float:
+    """The exercise: the player's x relative to the fast creature's centre at the end, m."""
+    return float(leap_run(LEAP_FAST)[-1, 2])
+
+
 # -- chapter 7: what accuracy costs --------------------------------------------------------------
 
 CH7_DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240)
@@ -812,8 +1047,19 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch2_total_weight,
         ch3_room_max_lag,
         ch3_room_final_error,
-        ch3_ring_perceived,
+        ch3_room_turn,
+        ch3_room_turn_deg,
+        ch3_room_turn_time,
+        ch3_ring_rim,
+        ch3_ring_rate,
+        ch3_ring_segments,
+        ch3_ring_centre,
+        ch3_ring_centre_run,
+        ch3_ring_mass,
         ch3_ring_expected,
+        ch3_ring_perceived,
+        ch3_ring_support_expected,
+        ch3_ring_support,
         ch3_ring_ratio,
         ch4_jitter_raw,
         ch4_jitter_ema,
@@ -848,6 +1094,17 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch6_null_perceived,
         ch6_null_speed_change,
         ch6_air_budget_bound,
+        ch6_leap_land_time,
+        ch6_leap_land_x,
+        ch6_leap_end_x,
+        ch6_leap_ride_y,
+        ch6_leap_relative_speed,
+        ch6_leap_speed,
+        ch6_leap_perceived,
+        ch6_leap_slope,
+        ch6_leap_fast_land_time,
+        ch6_leap_fast_land_x,
+        ch6_leap_fast_end_x,
         ch7_reverse_30,
         ch7_reverse_120,
         ch7_reverse_240,
@@ -939,11 +1196,12 @@ def fig_ch3(path: Path) -> Path:
     a.legend()
     rates = np.array([0.5, 1.0, 1.5, 2.0, 2.5, 3.0])
     readings = np.array([ring_reading(float(w)) for w in rates])
-    b.plot(rates, readings[:, 1], lw=3, alpha=0.5, label="ω²·r at the box's centre")
+    b.plot(rates, readings[:, 1], lw=3, alpha=0.5, label="ω²·r at the player's centre")
     b.plot(rates, readings[:, 0], "ko", label="|perceived gravity|")
+    b.axvline(ch3_ring_rate(), color="k", ls="--", lw=1, label="the level's spin")
     b.set_xlabel("ring spin ω (rad/s)")
     b.set_ylabel("gravity felt (m/s²)")
-    b.set_title("a box riding a 5 m ring, no gravity at all")
+    b.set_title(f"spinning_ring: the player on a {ch3_ring_rim():g} m ring, no gravity at all")
     b.legend()
     return _save(fig, path)
 
@@ -1023,10 +1281,13 @@ def fig_ch5(path: Path) -> Path:
 
 
 def fig_ch6(path: Path) -> Path:
-    """The gravity flip: height and tilt; the null enemy's felt gravity."""
+    """The gravity flip: height and tilt; the null enemy's felt gravity; the leap, seen from the
+    creature."""
     r = flip_run()
     n = null_run()
-    fig, (a, b, c) = _axes(3, height=2.6)
+    leap = leap_run()
+    fast = leap_run(LEAP_FAST)
+    fig, (a, b, c, d) = _axes(4, height=2.6)
     a.plot(r[:, 0], r[:, 1])
     a.axhline(r[-1, 1], color="k", ls="--", lw=1, label="ride height under the ceiling")
     a.set_ylabel("height of the centre (m)")
@@ -1043,6 +1304,17 @@ def fig_ch6(path: Path) -> Path:
     c.set_ylabel("m/s²")
     c.set_title("null_enemy: gravity nullified at t = 1 s")
     c.legend()
+    d.plot(leap[:, 0], leap[:, 2], color="C0", label="x relative to the creature")
+    d.plot(leap[:, 0], leap[:, 3], color="C1", label="y relative to the creature")
+    d.plot(fast[:, 0], fast[:, 2], ":", color="C0", label=f"x, creature at {LEAP_FAST:g} m/s")
+    d.axvline(LEAP_TIME + ch6_leap_land_time(), color="k", ls="--", lw=1, label="lands")
+    half = leap_half_width()
+    d.axhspan(-half, half, color="C0", alpha=0.08, label="x on the creature's width")
+    d.set_ylim(-7.0, 10.0)
+    d.set_xlabel("time (s)")
+    d.set_ylabel("m")
+    d.set_title(f"gravity_leap: own gravity switched and a jump at t = {LEAP_TIME:g} s")
+    d.legend(fontsize=8, ncol=3, loc="upper center")
     return _save(fig, path)
 
 

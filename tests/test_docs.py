@@ -16,6 +16,7 @@ import pytest
 
 from playground import figures
 from playground.cli import main
+from playground.controller import ControllerConfig
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 CHAPTERS = sorted((DOCS / "chapters").glob("*.md"))
@@ -34,6 +35,13 @@ TOL_LIMIT = 0.01
 
 TOL_DRIFT = 1e-3
 """m: the drive's drift against a·τ·T (the lag's own settling adds well under a millimetre)."""
+
+TOL_LEAP_SHIFT = 1e-9
+"""m: the leap's flight never touches the creature, so the landing spot moves by exactly the
+creature's extra travel; only the rounding of positions of order 10 m differs."""
+
+TOL_CARRIED = 0.01
+"""m/s: speed relative to the creature that still counts as carried (gravity_leap's own check)."""
 
 
 def markers() -> list[tuple[str, str, str, str]]:
@@ -136,7 +144,7 @@ def test_exercise_5_stability_limit_is_two_zeta_plus_two_root() -> None:
 
 def test_exercise_1_twice_the_acceleration_twice_the_drift() -> None:
     """Chapter 1's exercise: at 2 m/s² the drift is a·τ·T = 10 cm."""
-    tau = figures.ControllerConfig().drive_time
+    tau = ControllerConfig().drive_time
     assert abs(figures.ch1_drift_2_cm() / 100.0 - 2.0 * tau * 1.0) < TOL_DRIFT
 
 
@@ -162,3 +170,18 @@ def test_exercise_5_a_shove_below_the_threshold_is_recovered() -> None:
     player over; one at the threshold does."""
     assert figures.shove(140.0)[0] is False
     assert figures.shove(figures.ch5_knockover())[0] is True
+
+
+def test_exercise_6_a_faster_creature_is_landed_on_as_soon_and_further_back() -> None:
+    """Chapter 6's exercise: the flight after the leap does not depend on the creature, so a
+    creature flying Δv faster is landed on at the same moment, Δv·t further back (t since the
+    start), and it still carries the player."""
+    dv = figures.LEAP_FAST - figures.ch6_leap_speed()
+    land = figures.ch6_leap_land_time()
+    assert abs(figures.ch6_leap_fast_land_time() - land) < 0.5 * figures.DT
+    shift = figures.ch6_leap_land_x() - figures.ch6_leap_fast_land_x()
+    assert abs(shift - dv * (figures.LEAP_TIME + land)) < TOL_LEAP_SHIFT
+    end = figures.leap_run(figures.LEAP_FAST)[-1]
+    assert end[1] == 1.0, "the player should end standing on the faster creature"
+    assert abs(end[2]) < figures.leap_half_width()
+    assert end[4] < TOL_CARRIED
