@@ -243,7 +243,6 @@ class Mover:
 
 
 def ring_room(
-    space: pymunk.Space,
     body: pymunk.Body,
     radius: float,
     *,
@@ -251,14 +250,14 @@ def ring_room(
     thickness: float = 0.1,
     friction: float = 1.0,
 ) -> list[pymunk.Segment]:
-    """Build a closed ring of ``segments`` thin segments (inner radius ``radius``, m) on ``body``.
+    """A closed ring of ``segments`` segments (inner radius ``radius``, walls ``thickness`` thick,
+    m) on ``body``, to add with it: ``world.add(name, body, *ring_room(body, radius))``.
 
     Spin the (kinematic) body with a :class:`Spin` mover to make a carnival ride: a body on the
     inner wall is carried round and feels ``v²/r`` outward.
 
-    >>> space = pymunk.Space()
     >>> ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    >>> len(ring_room(space, ring, 5.0, segments=12))
+    >>> len(ring_room(ring, 5.0, segments=12))
     12
     """
     positive("radius", radius)
@@ -280,7 +279,4 @@ def ring_room(
         )
         seg.friction = friction
         shapes.append(seg)
-    if body.space is None:
-        space.add(body)
-    space.add(*shapes)
     return shapes

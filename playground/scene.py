@@ -142,7 +142,7 @@ def _build(level: Level) -> Scene:
     scene = Scene(level, world)
     static = world.space.static_body
     for shape in level.geometry:
-        world.space.add(*_shapes(world.space, static, shape))
+        world.space.add(*_shapes(static, shape))
     for mover in level.movers:
         _add_mover(world, mover)
     for prop in level.props:
@@ -182,7 +182,7 @@ def gravity_field(model: GravityModel) -> GravityField:
     return gravity_mod.Zones(gravity_field(model.base), zones)
 
 
-def _shapes(space: pymunk.Space, body: pymunk.Body, model: Shape) -> list[pymunk.Shape]:
+def _shapes(body: pymunk.Body, model: Shape) -> list[pymunk.Shape]:
     """The pymunk shapes of one shape table, in the body's frame (not yet added)."""
     out: list[pymunk.Shape]
     if isinstance(model, Segment):
@@ -201,37 +201,30 @@ def _shapes(space: pymunk.Space, body: pymunk.Body, model: Shape) -> list[pymunk
         half = model.length / 2
         out = [pymunk.Segment(body, (cx, cy - half), (cx, cy + half), model.radius)]
     else:
-        return _ring(space, body, model)
+        return _ring(body, model)
     for shape in out:
         shape.friction = model.friction
         shape.elasticity = model.elasticity
     return out
 
 
-def _ring(space: pymunk.Space, body: pymunk.Body, model: Ring) -> list[pymunk.Shape]:
-    # ring_room adds its segments to the space itself; hand back none to add again.
-    for seg in movers_mod.ring_room(
-        space,
+def _ring(body: pymunk.Body, model: Ring) -> list[pymunk.Shape]:
+    segments = movers_mod.ring_room(
         body,
         model.radius,
         segments=model.segments,
         thickness=model.thickness,
         friction=model.friction,
-    ):
+    )
+    for seg in segments:
         seg.elasticity = model.elasticity
-    return []
+    return list(segments)
 
 
 def _add_mover(world: World, model: MoverModel) -> None:
     body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    shapes: list[pymunk.Shape] = []
-    rings = [s for s in model.shapes if isinstance(s, Ring)]
-    for shape in model.shapes:
-        if not isinstance(shape, Ring):
-            shapes += _shapes(world.space, body, shape)
+    shapes = [s for m in model.shapes for s in _shapes(body, m)]
     world.add(model.name, body, *shapes)
-    for ring in rings:
-        _shapes(world.space, body, ring)
     world.add_mover(model.name, _path(model))
 
 
@@ -274,7 +267,7 @@ def make_prop(world: World, model: Prop) -> pymunk.Body:
     """A dynamic body for a prop: its mass spread over its shapes by area; the body turns about
     its position (its origin), which is the centre of gravity for symmetric shapes."""
     body = pymunk.Body()
-    shapes = [s for m in model.shapes for s in _shapes(world.space, body, m)]
+    shapes = [s for m in model.shapes for s in _shapes(body, m)]
     areas = [s.area for s in shapes]
     total = sum(areas)
     if not total > 0.0:

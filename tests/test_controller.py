@@ -305,8 +305,7 @@ def test_riding_a_spinning_ring_feels_m_v2_over_r_and_keeps_its_place() -> None:
     rate, radius = 1.5, 5.0
     world = World(gravity=(0.0, 0.0))
     ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    world.add("ring", ring)
-    ring_room(world.space, ring, radius, segments=64)
+    world.add("ring", ring, *ring_room(ring, radius, segments=64))
     world.add_mover("ring", Spin(rate=rate))
     r0 = radius - ControllerConfig().ride_height
     player = Controller(world, "player", (0.0, -r0))

@@ -385,8 +385,7 @@ def test_spinning_ring_normal_is_centripetal() -> None:
     segments = 48
     world = World(WorldConfig(contact_split=True), gravity=Uniform((0.0, 0.0)))
     ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    world.add("ring", ring)
-    ring_room(world.space, ring, RING_RADIUS, segments=segments)
+    world.add("ring", ring, *ring_room(ring, RING_RADIUS, segments=segments))
     world.add_mover("ring", Spin(rate=SPIN))
     # Sit at the middle of a chord (where the wall's inner face is at RING_RADIUS), carried along.
     phi = 2.0 * math.pi * 36.5 / segments

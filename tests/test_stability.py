@@ -138,10 +138,9 @@ def spinning_ring(config: WorldConfig) -> Hard:
     """A ring of radius 5 m spinning at 6 rad/s (30 m/s floor, 7 g) with the player and crates."""
     world = World(config)
     ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    world.add("ring", ring)
     # Walls 0.6 m thick: with ring_room's default 0.2 m, 7 g pushes a crate through the wall at
     # 1/60 s and 2 iterations (measured: crate out at t = 1.9 s) — a limit worth knowing.
-    ring_room(world.space, ring, 5.0, segments=64, thickness=RING_WALL)
+    world.add("ring", ring, *ring_room(ring, 5.0, segments=64, thickness=RING_WALL))
     world.add_mover("ring", Spin(rate=6.0))
     player = Controller(world, "player", position=(0.0, -3.5))
     for i in (0, 1, 3, 4):

@@ -194,8 +194,7 @@ def ring(knobs: Knobs) -> Scene:
     """
     world = World(knobs.config(), gravity=(0.0, 0.0))
     body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    world.add("ring", body)
-    ring_room(world.space, body, RING_RADIUS, segments=64)
+    world.add("ring", body, *ring_room(body, RING_RADIUS, segments=64))
     world.add_mover("ring", Spin(rate=RING_RATE))
     r0 = RING_RADIUS - PLAYER_SIZE[1] / 2
     _player(world, (0.0, -r0))
