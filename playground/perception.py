@@ -54,7 +54,7 @@ class PerceivedGravity:
     >>> pg = PerceivedGravity(Perception(spike_filter=False))
     >>> pg.resize(np.array([-1]))
     >>> pg.update(np.array([[0.0, 9.81]]), np.array([True]), dt=0.01)
-    >>> pg.gravity.tolist(), pg.up.tolist()
+    >>> pg.gravity.tolist(), (pg.up + 0.0).tolist()  # + 0.0: no negative zeros
     ([[-0.0, -9.81]], [[0.0, 1.0]])
     """
 
@@ -101,17 +101,25 @@ class PerceivedGravity:
             )
         all_valid = bool(valid.all())
         sample = -specific if all_valid else np.where(valid[:, None], -specific, np.nan)
-        out = np.asarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
-        norm = np.hypot(out[:, 0], out[:, 1])
+        out = np.ascontiguousarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
+        # Rows as complex numbers x + iy: magnitude and direction in whole contiguous operations
+        # (an (N, 2) slice costs numpy several times more).
+        z = out.view(np.complex128).ravel()
+        norm = np.abs(z)
         strong = norm >= self.config.up_threshold  # False for NaN rows
-        # The usual case — every row valid, finite and strong — costs three whole-array
-        # operations; otherwise masked in-place writes (no gathers, no scatters).
         if all_valid and bool(strong.all()):
             self.gravity = out
-            self.up = out / -norm[:, None]
+            self.up = (z / -norm).view(np.float64).reshape(-1, 2)
             self.up_complete = True
             return
-        np.copyto(self.gravity, out, where=np.isfinite(norm)[:, None])
-        np.divide(out, -norm[:, None], out=self.up, where=strong[:, None])
+        finite = np.isfinite(norm)
+        if finite.all():
+            self.gravity = out
+        else:
+            np.copyto(self.gravity, out, where=finite[:, None])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            direction = z / -norm
+        held = self.up.view(np.complex128).ravel()
+        self.up = np.where(strong, direction, held).view(np.float64).reshape(-1, 2)
         if not self.up_complete:
             self.up_complete = bool(np.isfinite(self.up).all())
