@@ -2,8 +2,9 @@
 
 Registered by the ``pytest11`` entry point, so it works wherever playground is installed. A
 ``*.toml`` file is a level file when it lives in a directory called ``levels`` or matches one of
-the ``levels_glob`` ini patterns (default ``levels/*.toml`` and ``*/levels/*.toml``). Each file is built and run once, on
-its first item; each expectation is one test item whose failure message is the check's detail.
+the ``levels_glob`` ini patterns (default ``levels/*.toml`` and ``*/levels/*.toml``). Each file
+is built and run once, on its first item; each expectation is one test item whose failure
+message is the check's detail.
 A file that does not load is one failing item listing every problem.
 """
 
