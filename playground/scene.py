@@ -123,20 +123,9 @@ def build(level: Level) -> Scene:
 def _build(level: Level) -> Scene:
     s = level.settings
     p = level.tracking.perception
+    # The models restate the frozen configs key for key (tests/test_level_defaults.py).
     config = WorldConfig(
-        dt=s.dt,
-        substeps=s.substeps,
-        iterations=s.iterations,
-        damping=s.damping,
-        collision_slop=s.collision_slop,
-        contact_split=s.contact_split,
-        perception=Perception(
-            min_cutoff=p.min_cutoff,
-            beta=p.beta,
-            d_cutoff=p.d_cutoff,
-            spike_filter=p.spike_filter,
-            up_threshold=p.up_threshold,
-        ),
+        **s.model_dump(exclude={"seconds"}), perception=Perception(**p.model_dump())
     )
     world = World(config, gravity=gravity_field(level.gravity))
     scene = Scene(level, world)
@@ -294,19 +283,7 @@ def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
     if timeline:
         source = Script(
             timeline=tuple(
-                (
-                    inp.t,
-                    Intent(
-                        move=inp.move,
-                        jump=inp.jump,
-                        grab=inp.grab,
-                        push=inp.push,
-                        climb=inp.climb,
-                        gravity=inp.gravity,
-                        restore_gravity=inp.restore_gravity,
-                        nullify=inp.nullify,
-                    ),
-                )
+                (inp.t, Intent(**inp.model_dump(exclude={"t", "actor"})))
                 for inp in sorted(timeline, key=lambda i: i.t)
             )
         )
