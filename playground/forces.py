@@ -120,19 +120,9 @@ class ForceLedger:
     def __len__(self) -> int:
         return len(self._entries)
 
-    def parts(self, body_id: int) -> list[float] | None:
-        """Per-category sums ``[px, py, ax, ay, sx, sy]`` for a body, or None if it got nothing."""
-        e = self._entries.get(body_id)
-        return None if e is None else e.parts
-
     def items(self) -> list[tuple[int, list[float]]]:
         """(body id, per-category sums ``[px, py, ax, ay, sx, sy]``) of every body with forces."""
         return [(body_id, e.parts) for body_id, e in self._entries.items()]
-
-    def total(self, body_id: int) -> tuple[float, float, float]:
-        """(fx, fy, torque) recorded for a body this step."""
-        e = self._entries.get(body_id)
-        return (0.0, 0.0, 0.0) if e is None else (e.fx, e.fy, e.torque)
 
 
 @dataclass(frozen=True, slots=True)
