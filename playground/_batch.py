@@ -1,6 +1,6 @@
 """Plumbing over ``pymunk.batch``: read and write every body's state as numpy rows.
 
-Hazards measured on pymunk 7.3.1 (see DESIGN.md §4): row order changes when bodies sleep, wake,
+Hazards measured on pymunk 7.3.1 (see docs/design.md §4): row order changes when bodies sleep, wake,
 are added or removed, so rows are keyed by body id, never by position; ``space.static_body`` and
 kinematic bodies appear as rows too; ``set_space_bodies`` writes to the wrong bodies while any body
 is asleep, so :meth:`BodyRows.write_forces` must not be used when sleeping is enabled.

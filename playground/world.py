@@ -1,8 +1,8 @@
 """The world: a pymunk space in SI units and the fixed step that runs every stage top-down.
 
-The stages (DESIGN.md §4) are named by :class:`Stage`; a stage the scene does not need is skipped
-without cost (uniform gravity is ``space.gravity``; no tracked body, no solver; no perceiver, no
-filter). Each stage can be timed.
+The stages (docs/design.md §4) are named by :class:`Stage`; a stage the scene does not need is
+skipped without cost (uniform gravity is ``space.gravity``; no tracked body, no solver; no
+perceiver, no filter). Each stage can be timed.
 
 >>> world = World()
 >>> box = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.5))

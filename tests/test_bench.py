@@ -33,7 +33,7 @@ TOL_EXACT_AT_REST = 1e-6
 only round-off remains (measured ≈ 1e-9 at dt = 1/30 s)."""
 
 TOL_ESTIMATORS_AGREE = 1e-9
-"""Reverse integration and the arbiter-impulse sum agree to round-off (DESIGN.md §2: ~1e-12
+"""Reverse integration and the arbiter-impulse sum agree to round-off (docs/design.md §2: ~1e-12
 relative on the force; the relative errors compared here are differences of such forces)."""
 
 TOL_LAG = 1e-6

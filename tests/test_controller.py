@@ -298,8 +298,8 @@ velocity the floor gives the centre, so a settled rider does not move relative t
 
 
 def test_riding_a_spinning_ring_feels_m_v2_over_r_and_keeps_its_place() -> None:
-    """DESIGN.md §5: inside a ring spinning at ω (no gravity) the player is grounded, carried at
-    the floor's angular rate (its drive's goal is the ground's velocity at its centre, ω·r, not
+    """docs/design.md §5: inside a ring spinning at ω (no gravity) the player is grounded, carried
+    at the floor's angular rate (its drive's goal is the ground's velocity at its centre, ω·r, not
     the rim's ω·R under its feet), and its support is N = m·v²/r = m·ω²·r toward the centre with r
     the radius of its centre of mass; its perceived gravity points outward with magnitude ω²·r."""
     rate, radius = 1.5, 5.0

@@ -1,4 +1,4 @@
-"""Laws of the reverse-integration force solver (DESIGN.md §2) and the exact answers of §5.
+"""Laws of the reverse-integration force solver (docs/design.md §2) and the exact answers of §5.
 
 Two independent readings of what the engine did to a body must agree: reverse integration
 ``J = m·(v₁ − d·v₀) − (m·g + F)·h`` and the sum of the body's arbiter impulses. Their difference is
@@ -187,7 +187,7 @@ def test_constraint_residual_equals_joint_impulse(swing: bool) -> None:
         assert abs(f.constraint[0]) <= TOL_ABS
 
 
-# -- exact answers (DESIGN.md §5) ------------------------------------------------------------------
+# -- exact answers (docs/design.md §5) -------------------------------------------------------------
 
 TOL_SETTLED_REL = 1e-6
 """A settled contact still carries Baumgarte position correction of the residual overlap (below

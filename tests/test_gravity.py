@@ -1,4 +1,4 @@
-"""Laws of the gravity fields and of how the world applies them (DESIGN.md §4, stage 3).
+"""Laws of the gravity fields and of how the world applies them (docs/design.md §4, stage 3).
 
 Fields are pure functions of position and time; a uniform field is ``space.gravity`` (no GRAVITY
 stage), anything else is a per-body force the solver knows about.

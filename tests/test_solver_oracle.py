@@ -2,8 +2,8 @@
 
 The oracle reads each body's velocity with plain attribute access just before the step and just
 after it, knows every force it applied and the gravity each body gets, and computes, body by body,
-``J = m·(v₁ − d·v₀) − (m·g + F)·h`` and ``L = I·(ω₁ − d·ω₀) − T·h`` (DESIGN.md §2). Random scenes
-add, remove and put bodies to sleep while the world runs.
+``J = m·(v₁ − d·v₀) − (m·g + F)·h`` and ``L = I·(ω₁ − d·ω₀) − T·h`` (docs/design.md §2). Random
+scenes add, remove and put bodies to sleep while the world runs.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Scenes with exact answers (DESIGN.md §5), built on :class:`~playground.world.World` directly.
+"""Scenes with exact answers (docs/design.md §5), built on :class:`~playground.world.World`.
 
 Each builder takes the solver knobs and returns a :class:`Scene`: the world, the bodies whose
 support forces (N) are summed into one measured vector, and the exact value of that sum at any

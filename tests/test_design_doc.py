@@ -1,0 +1,51 @@
+"""Laws of the design notes (docs/design.md): the newcomer's map matches the code it maps.
+
+The notes name, for every stage of :meth:`World.step`, the module that owns it; every module they
+name exists, and nothing in the repository cites a design document that is not in it.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from playground.world import Stage
+
+ROOT = Path(__file__).resolve().parent.parent
+DESIGN = ROOT / "docs" / "design.md"
+STAGE_ROW = re.compile(r"^\| (\d) `(\w+)` \|[^|]*\| (.*) \|$", re.MULTILINE)
+MODULE = re.compile(r"`((?:view/)?_?\w+\.py)`|`(view/)`")
+
+
+def stage_rows() -> dict[str, str]:
+    """Stage name → the owner column of the stage table."""
+    return {name: owner for _, name, owner in STAGE_ROW.findall(DESIGN.read_text("utf-8"))}
+
+
+def test_every_stage_of_the_step_has_a_row_in_order() -> None:
+    """The table lists the stages of :class:`Stage`, numbered as the step runs them."""
+    rows = STAGE_ROW.findall(DESIGN.read_text("utf-8"))
+    assert [(int(n), name) for n, name, _ in rows] == [(s.value, s.name) for s in Stage]
+
+
+@pytest.mark.parametrize("stage", [s.name for s in Stage])
+def test_each_stage_names_an_owner_module_that_exists(stage: str) -> None:
+    """Every owner the table names is a module (or folder) of the package."""
+    owners = [a or b for a, b in MODULE.findall(stage_rows()[stage])]
+    assert owners, f"stage {stage} names no module"
+    for owner in owners:
+        assert (ROOT / "playground" / owner).exists(), f"{stage}: no playground/{owner}"
+
+
+def test_nothing_cites_a_design_document_outside_the_repository() -> None:
+    """Code, tests, levels and docs cite docs/design.md, never a design file that is not here."""
+    cited = []
+    for folder in ("playground", "tests", "docs", "levels", "benchmarks"):
+        for path in (ROOT / folder).rglob("*"):
+            if path.suffix in {".py", ".md", ".toml"} and path != Path(__file__).resolve():
+                text = path.read_text("utf-8")
+                cited += [f"{path.relative_to(ROOT)}" for _ in re.findall(r"\bDESIGN\.md", text)]
+    assert "DESIGN.md" not in (ROOT / "README.md").read_text("utf-8")
+    assert cited == []
