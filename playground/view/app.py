@@ -28,6 +28,7 @@ import pygame
 
 from playground.intents import Intent, IntentSource
 from playground.view.camera import Camera
+from playground.view.capture import save_picture
 from playground.view.draw import (
     COLOURS,
     Overlay,
@@ -371,6 +372,8 @@ class App:
             self.session.keyboard.key_up(event.key)
         elif event.type == pygame.MOUSEWHEEL:
             self.camera.zoom_by(ZOOM_STEP ** float(event.y))
+        elif event.type == pygame.VIDEORESIZE:
+            self.resize(event.size)
 
     def _key(self, key: int) -> None:
         kb = self.session.keyboard
@@ -535,15 +538,23 @@ class App:
         return surf
 
     def screenshot(self, path: Path) -> Path:
-        """Save the current picture as PNG."""
+        """Save the current picture (type from the suffix: .png, .bmp, .tga, .jpg), whole or not
+        at all."""
         self.render()
-        pygame.image.save(self.surface, str(path))
-        return path
+        return save_picture(self.surface, path)
 
     # -- loops -----------------------------------------------------------------------------------
 
-    def run_frames(self, frames: int, frame_time: float = HEADLESS_FRAME) -> None:
-        """Headless: ``frames`` frames of ``frame_time`` s each, drawing every frame."""
+    def run_frames(
+        self,
+        frames: int,
+        frame_time: float = HEADLESS_FRAME,
+        *,
+        window: pygame.Surface | None = None,
+        each: Any = None,
+    ) -> None:
+        """``frames`` frames of ``frame_time`` s each, drawing every frame: off screen, or shown in
+        ``window`` if given. ``each.offer(surface)`` (e.g. a GIF writer) sees every drawn frame."""
         for _ in range(frames):
             if not self.running:
                 break
@@ -551,6 +562,10 @@ class App:
                 self.handle(event)
             self.frame(frame_time)
             self.render()
+            if each is not None:
+                each.offer(self.surface)
+            if window is not None:
+                self._present()
 
     def run_window(self, window: pygame.Surface) -> None:
         """The interactive loop: events, physics by wall clock, draw, flip."""
@@ -565,8 +580,23 @@ class App:
             self.frame(min(now - last, 0.25))
             last = now
             self.render()
+            self._present()
+
+    def _present(self) -> None:
+        """Show the drawn frame in the window (whatever its size is now)."""
+        window = pygame.display.get_surface()
+        if window is not None:
             window.blit(self.surface, (0, 0))
             pygame.display.flip()
+
+    def resize(self, size: tuple[int, int]) -> None:
+        """Draw at ``size`` (px) from now on: a window resized by its user."""
+        w, h = max(int(size[0]), 1), max(int(size[1]), 1)
+        if (w, h) == self.size:
+            return
+        self.surface = pygame.Surface((w, h))
+        self.size = (w, h)
+        self.camera.size = (w, h)
 
     def replays(self) -> list[Replay]:
         """Replays of every finished session and the current one."""

@@ -9,12 +9,12 @@ from __future__ import annotations
 
 import os
 import sys
-from pathlib import Path
 from typing import Any
 
 import pygame
 
-from playground.view.app import App, Session, Show, display_available
+from playground.view.app import HEADLESS_FRAME, App, Session, Show, display_available
+from playground.view.capture import GIF_FPS, GifWriter, gif_path, parse_size, picture_path
 from playground.view.replay import Replay, ReplayError
 
 __all__ = [
@@ -110,16 +110,28 @@ def play(
     replay_out: str | None = None,
     replay: str | None = None,
     size: tuple[int, int] = WINDOW,
+    gif: str | None = None,
 ) -> int:
     """``playground play``: open ``level`` in a window (or off screen); returns an exit code.
 
-    Without a display and without ``headless`` it says so and returns 2. Headless runs
-    ``frames`` frames (default 120) of 1/60 s each and saves ``screenshot`` if given. ``replay``
-    (a file) drives the player instead of the keyboard. On exit the player's inputs since the last
-    (re)start are written to ``replay_out`` if given.
+    Without a display and without ``headless`` it says so and returns 2; so do an output path
+    that cannot be written (checked before anything runs). Headless runs ``frames`` frames
+    (default 120) of 1/60 s each and saves ``screenshot`` if given; ``gif`` records those frames
+    as an animated GIF (one in three: 20 fps, real time). ``replay`` (a file) drives the player
+    instead of the keyboard. On exit the player's inputs since the last (re)start are written to
+    ``replay_out`` if given.
     """
     from playground.level import LevelError
 
+    try:
+        shot = picture_path(screenshot) if screenshot is not None else None
+        movie = gif_path(gif) if gif is not None else None
+    except ValueError as exc:
+        print(f"playground play: {exc}", file=sys.stderr)
+        return 2
+    if movie is not None and frames is None and not headless:
+        print("playground play: --gif: needs --frames N in a window", file=sys.stderr)
+        return 2
     if not headless and not display_available():
         print(
             "playground play: no display found (DISPLAY/WAYLAND_DISPLAY unset). "
@@ -136,27 +148,29 @@ def play(
     except (LevelError, ReplayError) as exc:
         print(f"playground play: {exc}", file=sys.stderr)
         return 1
+    recorder = GifWriter(every=round(1.0 / (HEADLESS_FRAME * GIF_FPS))) if movie else None
+    window: pygame.Surface | None = None
     if headless:
         init_headless()
-        app = App(show_level, level, levels=names, size=size, replay=watch)
-        app.run_frames(120 if frames is None else frames)
     else:
         window = _open_window(size)
         if window is None:
             return 2
         pygame.display.set_caption("playground")
-        app = App(show_level, level, levels=names, size=size, replay=watch)
-        if frames is not None:
-            app.run_frames(frames)
-        else:
-            app.run_window(window)
-    if screenshot is not None:
-        app.screenshot(Path(screenshot))
+    app = App(show_level, level, levels=names, size=size, replay=watch)
+    if window is None or frames is not None:
+        app.run_frames(120 if frames is None else frames, window=window, each=recorder)
+    else:
+        app.run_window(window)
+    if shot is not None:
+        app.screenshot(shot)
+    if movie is not None and recorder is not None:
+        recorder.save(movie)
     if replay_out is not None:
         replays = app.replays()
         if replays:
             replays[-1].save(replay_out)
-    if not headless:
+    if window is not None:
         pygame.display.quit()
     return 0
 
@@ -176,9 +190,9 @@ def _open_window(size: tuple[int, int]) -> pygame.Surface | None:
             return None
         pygame.font.init()
         try:
-            return pygame.display.set_mode(size, vsync=1)
+            return pygame.display.set_mode(size, pygame.RESIZABLE, vsync=1)
         except pygame.error:
-            return pygame.display.set_mode(size)
+            return pygame.display.set_mode(size, pygame.RESIZABLE)
     except pygame.error as exc:
         print(f"playground play: cannot open a window ({exc}); use --headless.", file=sys.stderr)
         return None
@@ -186,9 +200,14 @@ def _open_window(size: tuple[int, int]) -> pygame.Surface | None:
 
 def run_play(args: Any) -> int:
     """Run ``playground play`` from the CLI's parsed arguments (level, headless, frames,
-    screenshot, replay_out)."""
+    screenshot, replay_out, replay, size, gif)."""
     if args.frames is not None and args.frames < 0:
         print(f"playground play: --frames: expected >= 0, got {args.frames}", file=sys.stderr)
+        return 2
+    try:
+        size = parse_size(args.size) if args.size is not None else WINDOW
+    except ValueError as exc:
+        print(f"playground play: {exc}", file=sys.stderr)
         return 2
     return play(
         args.level,
@@ -197,4 +216,6 @@ def run_play(args: Any) -> int:
         screenshot=args.screenshot,
         replay_out=args.replay_out,
         replay=args.replay,
+        size=size,
+        gif=args.gif,
     )
