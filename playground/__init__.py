@@ -1,6 +1,7 @@
 """playground: a 2D game-physics playground for force-driven player bodies, built on pymunk.
 
 The core imports pymunk and numpy only; the desktop view lives in ``playground.view``.
+The distribution is ``pymunk-playground``; the package and the command are ``playground``.
 """
 
 from playground.controller import Controller, ControllerConfig, ControllerForces, GroundHit, State
@@ -19,6 +20,9 @@ from playground.intents import Idle, Intent, IntentSource, Patrol, Script
 from playground.movers import Circle, Elevator, Mover, Sine, Spin, Waypoints, ring_room
 from playground.perception import PerceivedGravity, Perception
 from playground.world import Stage, StageTiming, World, WorldConfig
+
+__version__ = "0.1.0"
+"""The release (also the distribution's version: pyproject.toml reads it from here)."""
 
 __all__ = [
     "BodyForces",

@@ -31,6 +31,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
+from playground import __version__
 from playground.bench import cli as bench_cli
 from playground.level import LevelError, find, load, schema, shipped
 
@@ -170,7 +171,7 @@ def cmd_play(args: argparse.Namespace) -> int:
         from playground.view.launcher import run_play
     except ImportError as exc:
         print(
-            f"playground play: needs pygame-ce: pip install 'playground[view]' ({exc})",
+            f"playground play: needs pygame-ce: pip install 'pymunk-playground[view]' ({exc})",
             file=sys.stderr,
         )
         return 2
@@ -185,7 +186,7 @@ def cmd_figures(args: argparse.Namespace) -> int:
         paths = make_all(Path(args.out))
     except ImportError as exc:
         print(
-            f"playground figures: needs matplotlib: pip install 'playground[bench]' ({exc})",
+            f"playground figures: needs matplotlib: pip install 'pymunk-playground[bench]' ({exc})",
             file=sys.stderr,
         )
         return 2
@@ -215,6 +216,7 @@ def parser() -> argparse.ArgumentParser:
         prog="playground",
         description="A 2D game-physics playground for force-driven player bodies.",
     )
+    top.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     p = sub.add_parser("list", help="list the shipped levels with their titles")

@@ -19,13 +19,17 @@ playground.level.LevelError: <string>: settings.dtt: unknown key (did you mean '
 
 from __future__ import annotations
 
+import atexit
 import dataclasses
 import difflib
+import functools
+import importlib.resources
 import json
 import math
 import os
 import re
-import sys
+import shutil
+import tempfile
 import tomllib
 import types
 import typing
@@ -995,26 +999,54 @@ def load(path: str | os.PathLike[str]) -> Level:
 LEVELS_ENV = "PLAYGROUND_LEVELS"
 """Environment variable: extra directories of level files (os.pathsep separated)."""
 
+LEVELS_PACKAGE = "playground.levels"
+"""The package holding the shipped levels and their schema (the project's top-level ``levels/``
+folder, mapped into the package when it is built)."""
+
 
 def levels_dirs() -> list[Path]:
-    """Where shipped levels are looked for, in order.
-
-    1. directories in ``$PLAYGROUND_LEVELS``;
-    2. ``levels/`` beside the package (a source checkout or an editable install);
-    3. ``<prefix>/share/playground/levels`` (a wheel installs the files there as data files).
-    """
+    """The extra level directories named in ``$PLAYGROUND_LEVELS`` that exist, in order."""
     dirs = [Path(d) for d in os.environ.get(LEVELS_ENV, "").split(os.pathsep) if d]
-    dirs.append(Path(__file__).resolve().parent.parent / "levels")
-    dirs.append(Path(sys.prefix) / "share" / "playground" / "levels")
     return [d for d in dirs if d.is_dir()]
 
 
+@functools.cache
+def _packaged() -> dict[str, Path]:
+    """The levels inside the package, as files on disk.
+
+    ``importlib.resources`` finds them wherever the package was installed (a wheel, ``--user``,
+    an editable install). A zip import has no files on disk: the levels are copied once, under
+    their own names, into a temporary folder removed when the process exits.
+    """
+    root = importlib.resources.files(LEVELS_PACKAGE)
+    items = sorted(
+        (t for t in root.iterdir() if t.is_file() and t.name.endswith(".toml")),
+        key=lambda t: t.name,
+    )
+    if all(isinstance(t, Path) for t in items):
+        return {Path(str(t)).stem: Path(str(t)) for t in items}
+    folder = Path(tempfile.mkdtemp(prefix="playground-levels-"))
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    found: dict[str, Path] = {}
+    for t in items:
+        copy = folder / t.name
+        copy.write_bytes(t.read_bytes())
+        found[copy.stem] = copy
+    return found
+
+
 def shipped() -> dict[str, Path]:
-    """Shipped levels by name (file stem), from the first directory that has each."""
+    """Levels by name (file stem): those in ``$PLAYGROUND_LEVELS`` first, then the package's.
+
+    >>> sorted(shipped())[:3]
+    ['bounce', 'crusher', 'elevator']
+    """
     found: dict[str, Path] = {}
     for d in levels_dirs():
         for f in sorted(d.glob("*.toml")):
             found.setdefault(f.stem, f)
+    for name, path in _packaged().items():
+        found.setdefault(name, path)
     return found
 
 

@@ -3,7 +3,7 @@
 ``python -m playground.bench accuracy`` sweeps dt, substeps, solver iterations, force estimators
 and filters over scenes with exact answers; ``python -m playground.bench overhead`` times each
 stage and effect as bodies grow. matplotlib (figures) and tqdm (progress) are optional:
-``pip install playground[bench]``.
+``pip install 'pymunk-playground[bench]'``.
 """
 
 from playground.bench.accuracy import ESTIMATORS, FILTERS, Point, Result, measure, plan, sweep

@@ -346,7 +346,7 @@ def sweep(
     Without an executor a ``ProcessPoolExecutor`` of ``workers`` processes (default: the CPU
     count) is made and shut down; ``workers=0`` runs in this process. Any
     ``concurrent.futures.Executor`` works, e.g. Dask's ``Client(...).get_executor()``. The
-    progress bar needs tqdm (``pip install playground[bench]``); without it there is none.
+    progress bar needs tqdm (``pip install 'pymunk-playground[bench]'``); without it there is none.
     """
     todo = list(points)
     bar = _progress(len(todo)) if progress else None

@@ -362,7 +362,7 @@ def overhead_markdown(rows: Sequence[OverheadRow]) -> str:
 def overhead_figure(rows: Sequence[OverheadRow], path: Path) -> None:
     """Marginal cost of each effect (and the no-effect ratio) against bodies, into ``path``.
 
-    Needs matplotlib (``pip install playground[bench]``).
+    Needs matplotlib (``pip install 'pymunk-playground[bench]'``).
     """
     import matplotlib
 

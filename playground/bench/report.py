@@ -382,7 +382,7 @@ def accuracy_figure(rows: Sequence[Result], path: Path) -> list[Config]:
     """Draw error against cost with the Pareto front marked (and, beside it, error against dt
     and iterations) into ``path`` (PNG). Returns the configurations on the front.
 
-    Needs matplotlib (``pip install playground[bench]``).
+    Needs matplotlib (``pip install 'pymunk-playground[bench]'``).
     """
     import matplotlib
 

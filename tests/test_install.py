@@ -1,0 +1,147 @@
+"""Laws of the installed tool: the wheel holds the package, its levels and its schema, and a
+``pip install --user`` works from any directory.
+
+The wheel is built without network (setuptools comes with the test extras) from a copy of the
+files a build reads, so a stale ``build/`` folder in the checkout cannot leak into it. The user
+install goes into a temporary user base with ``--no-deps``: its dependencies (pymunk, numpy,
+pydantic) are taken from this environment's site-packages on ``PYTHONPATH``, so the test runs
+offline, and it checks that ``playground`` itself is imported from the user base.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import sysconfig
+import zipfile
+from pathlib import Path
+
+import pytest
+
+import playground
+
+ROOT = Path(__file__).resolve().parent.parent
+BUILD_INPUTS = ("pyproject.toml", "README.md", "LICENSE", "playground", "levels")
+"""What the build backend reads: everything else in a checkout stays out of the wheel."""
+SHIPPED_LEVELS = 15
+"""The README's table of levels."""
+
+
+def _run(*cmd: str | Path, cwd: Path, env: dict[str, str]) -> subprocess.CompletedProcess[str]:
+    done = subprocess.run(
+        [str(c) for c in cmd], cwd=cwd, env=env, capture_output=True, text=True, check=False
+    )
+    assert done.returncode in (0, 1), f"{cmd}: exit {done.returncode}\n{done.stderr}"
+    return done
+
+
+@pytest.fixture(scope="module")
+def wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The project's wheel, built offline from a clean copy of its sources."""
+    src = tmp_path_factory.mktemp("src")
+    for name in BUILD_INPUTS:
+        origin = ROOT / name
+        if origin.is_dir():
+            shutil.copytree(origin, src / name, ignore=shutil.ignore_patterns("__pycache__"))
+        else:
+            shutil.copy2(origin, src / name)
+    out = tmp_path_factory.mktemp("dist")
+    env = {**os.environ, "PIP_NO_INDEX": "1"}
+    _run(
+        sys.executable,
+        "-m",
+        "pip",
+        "wheel",
+        "-q",
+        "--no-deps",
+        "--no-build-isolation",
+        "-w",
+        out,
+        src,
+        cwd=src,
+        env=env,
+    )
+    (built,) = out.glob("pymunk_playground-*.whl")
+    return built
+
+
+def test_wheel_holds_every_subpackage_the_levels_and_the_schema(wheel: Path) -> None:
+    """Every package of the source tree, py.typed, the 15 levels and the schema are in the
+    wheel, under the distribution name ``pymunk-playground`` with its license file."""
+    names = set(zipfile.ZipFile(wheel).namelist())
+    packages = {
+        p.parent.relative_to(ROOT).as_posix() for p in (ROOT / "playground").rglob("__init__.py")
+    }
+    for package in packages:
+        assert f"{package}/__init__.py" in names, f"{package} is missing from the wheel"
+    assert "playground/py.typed" in names
+    assert "playground/levels/level.schema.json" in names
+    levels = [n for n in names if n.startswith("playground/levels/") and n.endswith(".toml")]
+    assert len(levels) == SHIPPED_LEVELS
+    info = f"pymunk_playground-{playground.__version__}.dist-info"
+    assert f"{info}/licenses/LICENSE" in names
+    metadata = zipfile.ZipFile(wheel).read(f"{info}/METADATA").decode()
+    assert "Name: pymunk-playground" in metadata
+    assert "Classifier: Typing :: Typed" in metadata
+
+
+def _base_python() -> str:
+    """The interpreter this venv was made from: a venv hides the user site, its base does not."""
+    base: str = getattr(sys, "_base_executable", sys.executable)
+    return base
+
+
+def test_user_install_works_from_an_unrelated_directory(wheel: Path, tmp_path: Path) -> None:
+    """``pip install --user`` into a fresh user base; from an empty directory ``playground list``
+    shows the 15 levels, ``playground run rest --json`` passes, and ``python -m playground
+    --version`` prints the version — all from the user base, not from this checkout."""
+    userbase = tmp_path / "userbase"
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    deps = sysconfig.get_paths()["purelib"]
+    env = {
+        k: v
+        for k, v in os.environ.items()
+        if k not in ("PYTHONPATH", "PYTHONHOME", "PYTHONNOUSERSITE", "VIRTUAL_ENV")
+    }
+    env |= {"PYTHONUSERBASE": str(userbase), "PIP_NO_INDEX": "1"}
+    # A distribution's Python may forbid --user installs (PEP 668); this one is a throwaway.
+    env["PIP_BREAK_SYSTEM_PACKAGES"] = "1"
+    python = _base_python()
+    _run(
+        sys.executable,
+        "-m",
+        "pip",
+        "--python",
+        python,
+        "install",
+        "-q",
+        "--user",
+        "--no-deps",
+        wheel,
+        cwd=elsewhere,
+        env=env,
+    )
+    env["PYTHONPATH"] = deps
+    env["PATH"] = os.pathsep.join([str(userbase / "bin"), env.get("PATH", "")])
+    where = _run(
+        python, "-c", "import playground; print(playground.__file__)", cwd=elsewhere, env=env
+    )
+    assert Path(where.stdout.strip()).is_relative_to(userbase)
+
+    command = shutil.which("playground", path=str(userbase / "bin"))
+    assert command is not None, "the console script is not in the user base's bin"
+    listing = _run(command, "list", cwd=elsewhere, env=env)
+    names = [line.split()[0] for line in listing.stdout.splitlines() if line.strip()]
+    assert len(names) == SHIPPED_LEVELS and "rest" in names and "sandbox" in names
+
+    report = _run(command, "run", "rest", "--json", cwd=elsewhere, env=env)
+    assert report.returncode == 0, report.stderr
+    checks = json.loads(report.stdout)["checks"]
+    assert checks and all(c["passed"] for c in checks)
+
+    version = _run(python, "-m", "playground", "--version", cwd=elsewhere, env=env)
+    assert version.stdout.strip() == f"playground {playground.__version__}"
