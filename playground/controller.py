@@ -321,6 +321,8 @@ class Controller:
         self.up: Vec = _unit_or(-g[0], -g[1], (0.0, 1.0))
         self.probe: GroundHit | None = None
         self.last_forces: ControllerForces = _NO_FORCES
+        self.pushed: tuple[Vec, Vec] | None = None
+        """Where (m) the last step's push acted on the pushed body, and the force on it (N)."""
         self.load: float = 0.0
         """Load borne from above in the last step: contacts and the push's reaction, N."""
         self.contact_load: float = 0.0
@@ -433,6 +435,7 @@ class Controller:
 
         hover = drive = push = _ZERO
         torque = 0.0
+        self.pushed = None
         if state is State.OFF_BALANCE:
             self.last_forces = _NO_FORCES
             return
@@ -779,6 +782,7 @@ class Controller:
             best.shape.body, (f * nx, f * ny), point=(cx, cy), category=Category.SUPPORT
         )
         world.apply_force(self.body, (-f * nx, -f * ny), category=Category.SUPPORT)
+        self.pushed = ((cx, cy), (f * nx, f * ny))
         return (-f * nx, -f * ny)
 
     # -- grab, hang, climb -----------------------------------------------------------------------

@@ -116,6 +116,17 @@ class View(_Model):
         default=None, description="Body the camera follows; default: the first actor, if any."
     )
     roll: bool = Field(default=False, description="Roll the camera with the followed body's up.")
+    overlays: list[Literal["vectors", "contacts", "joints", "reactions", "perceived"]] | None = (
+        Field(
+            default=None,
+            description="Overlays on at start (the compass is always on); default: vectors only.",
+        )
+    )
+    moment: NonNegative | None = Field(
+        default=None,
+        description="Simulated time, s, of the moment that shows the level's claim best "
+        "(its screenshot and its view test).",
+    )
 
 
 # -- gravity -------------------------------------------------------------------------------------
@@ -411,6 +422,11 @@ class Actor(_Model):
         default_factory=dict, description="ControllerConfig fields (SI), e.g. mass = 70."
     )
     patrol: Patrol | None = None
+    role: Literal["player", "enemy", "other"] | None = Field(
+        default=None,
+        description="How the view draws it and whether X nullifies it (enemy); default: player "
+        "for the actor named player, other for the rest.",
+    )
 
     @field_validator("controller")
     @classmethod

@@ -18,7 +18,8 @@ from hypothesis import strategies as st
 from playground import Category, Stage, World
 from playground.intents import Intent, IntentSource
 from playground.view import Accumulator, App, Camera, Replay, ReplayError, Session, Show
-from playground.view.draw import COLOURS, arrow_pixels
+from playground.view.arrows import arrow_length, weight_pixels
+from playground.view.draw import COLOURS
 from playground.view.launcher import init_headless, play
 
 SIZE = (640, 360)
@@ -142,12 +143,15 @@ def test_accumulator_steps_follow_time_not_frames(frames: list[float]) -> None:
     assert abs(steps - sum(frames) / dt) <= 1.0
 
 
-def test_arrow_scale_is_per_weight() -> None:
-    """Law: a body's weight is the same arrow length for a 10 kg crate and a 5 t whale, and a
-    larger force is never a shorter arrow."""
-    assert arrow_pixels(10 * 9.81, 10.0) == pytest.approx(arrow_pixels(5000 * 9.81, 5000.0))
-    lengths = [arrow_pixels(f, 70.0) for f in np.geomspace(1.0, 1e7, 50)]
+def test_arrow_scale_is_per_weight_and_follows_the_zoom() -> None:
+    """Law: a body's weight is the same arrow length for a 10 kg crate and a 5 t whale of the
+    same size; a larger force is never a shorter arrow; zooming in never shortens one weight."""
+    w = weight_pixels(1.0, 60.0)
+    assert arrow_length(10 * 9.81, 10.0, w) == pytest.approx(arrow_length(5000 * 9.81, 5000.0, w))
+    lengths = [arrow_length(f, 70.0, w) for f in np.geomspace(1.0, 1e7, 50)]
     assert all(b >= a for a, b in itertools.pairwise(lengths))
+    zooms = [weight_pixels(1.8, z) for z in np.geomspace(2.0, 1000.0, 30)]
+    assert all(b >= a for a, b in itertools.pairwise(zooms)) and zooms[-1] > zooms[0]
 
 
 # -- pictures ------------------------------------------------------------------------------------

@@ -27,19 +27,14 @@ from typing import Any
 import pygame
 
 from playground.intents import Intent, IntentSource
+from playground.view.arrows import G0
 from playground.view.camera import Camera
 from playground.view.capture import save_picture
-from playground.view.draw import (
-    COLOURS,
-    Overlay,
-    body_arrows,
-    draw_arrows,
-    draw_grid,
-    draw_legend,
-    draw_world,
-)
-from playground.view.hud import Hud, HudInfo, Scope, StageCosts
+from playground.view.draw import COLOURS, draw_grid
+from playground.view.hud import Hud, HudInfo, StageCosts
+from playground.view.overlay import OVERLAY_KEYS, Overlay, Painter, nearest, roles_of
 from playground.view.replay import Recorder, Replay
+from playground.view.scope import Scope
 from playground.world import Stage, World
 
 __all__ = [
@@ -135,6 +130,8 @@ CONTROLS: tuple[tuple[str, str], ...] = (
     ("- / = , wheel", "zoom out / in"),
     ("PgUp / PgDn", "previous / next level"),
     ("V", "toggle force vectors"),
+    ("1 / 2 / 3", "toggle contacts / joint forces / reactions"),
+    ("4 / 5", "toggle perceived gravity / world-up compass"),
     ("C", "toggle camera roll"),
     ("F12", "screenshot"),
     ("H", "show / hide this help"),
@@ -243,18 +240,19 @@ class Session:
         return self.show.controllers.get(p) if p is not None else None
 
     def nearest_enemy(self) -> str | None:
-        """The controller closest to the player (not the player), or None."""
+        """The enemy closest to the player whose gravity is not nullified yet (what X acts on),
+        or None."""
         p = self.show.player
         if p is None:
             return None
         here = self.world.body(p).position
-        best: tuple[float, str] | None = None
-        for name in self.show.controllers:
-            if name != p:
-                d = (self.world.body(name).position - here).length
-                if best is None or d < best[0]:
-                    best = (d, name)
-        return best[1] if best is not None else None
+        roles = roles_of(self.show)
+        candidates = [
+            (name, (self.world.body(name).position.x, self.world.body(name).position.y))
+            for name, role in roles.items()
+            if role == "enemy" and name != p and self.world.gravity_rule(name).scale != 0.0
+        ]
+        return nearest((here.x, here.y), candidates)
 
     def input_hook(self, world: World) -> None:
         """INPUTS stage: the player's intent for this step (keyboard or replay), recorded."""
@@ -312,7 +310,7 @@ class App:
         self.font = pygame.font.Font(None, 26)
         self.small = pygame.font.Font(None, 20)
         self.hud = Hud(self.font, self.small)
-        self.overlay = Overlay()
+        self.painter = Painter()
         self.show_help = False
         self.paused = False
         self.speed_index = SPEEDS.index(1.0)
@@ -351,7 +349,8 @@ class App:
             size=self.size, pixels_per_metre=show.pixels_per_metre, centre=show.camera
         )
         self.roll = show.roll
-        self.scope = Scope(seconds=4.0, dt=world.config.dt)
+        self.painter = Painter(_overlay_hint(show, self.painter.overlay))
+        self.scope = Scope(seconds=4.0, dt=world.config.dt, **_scope_body(show))
         self._scope_steps = -1
         self._costs = StageCosts()
         self._follow(0.0)
@@ -400,8 +399,8 @@ class App:
             self._cycle(-1)
         elif key == pygame.K_PAGEDOWN:
             self._cycle(1)
-        elif key == pygame.K_v:
-            self.overlay = dataclasses.replace(self.overlay, vectors=not self.overlay.vectors)
+        elif key in OVERLAY_KEYS:
+            self.overlay = self.overlay.toggled(OVERLAY_KEYS[key][0])
         elif key == pygame.K_c:
             self.roll = not self.roll
         elif key == pygame.K_h:
@@ -418,12 +417,22 @@ class App:
         return self.session.world
 
     @property
+    def overlay(self) -> Overlay:
+        """Which overlays are drawn."""
+        return self.painter.overlay
+
+    @overlay.setter
+    def overlay(self, value: Overlay) -> None:
+        self.painter.overlay = value
+
+    @property
     def speed(self) -> float:
         return SPEEDS[self.speed_index]
 
     def step(self) -> None:
         """One physics step, then feed the scope."""
         self.world.step()
+        self.painter.sample(self.world)
         self._sample()
 
     def _sample(self) -> None:
@@ -486,29 +495,15 @@ class App:
         draw_grid(surf, self.camera)
         show = self.session.show
         world = self.world
-        player_body = world.body(show.player) if show.player in world.names else None
-        actors = [world.body(n) for n in show.controllers if n in world.names]
-        draw_world(
-            surf, self.camera, world, player=player_body, actors=actors, overlay=self.overlay
+        self.painter.draw(
+            surf,
+            self.camera,
+            world,
+            show.controllers,
+            roles_of(show),
+            focus=show.follow if show.follow in show.controllers else show.player,
+            nullify_target=self.session.nearest_enemy(),
         )
-        if self.overlay.vectors:
-            for body in world.solver.bodies:
-                name = world.name_of(body)
-                if name is None:
-                    continue
-                ctrl = show.controllers.get(name)
-                arrows = body_arrows(world, name, *_controller_forces(ctrl))
-                c = body.local_to_world(body.center_of_gravity)
-                draw_arrows(
-                    surf, self.camera, arrows, body.mass, ((c.x, c.y), world.perceived_up(name))
-                )
-            draw_legend(surf, self.small, (self.size[0] - 250, 8))
-        target = self.session.nearest_enemy()
-        if target is not None:
-            # The enemy X would nullify: a ring around it.
-            t = world.body(target).position
-            ring = max(self.camera.pixels(1.2), 12.0)
-            pygame.draw.circle(surf, COLOURS["actor"], self.camera.to_screen((t.x, t.y)), ring, 1)
         ctrl = self.session.player
         state = getattr(getattr(ctrl, "state", None), "value", None)
         notes = ["H: controls"]
@@ -533,6 +528,15 @@ class App:
             ),
             self.scope if show.player is not None else None,
         )
+        right = self.size[0] - 8
+        panel = self.painter.draw_panel(surf, self.small, (right, 8))
+        legend = self.painter.draw_legend(surf, self.small, (right, panel.bottom + 4))
+        self.hud.rects += [panel, legend]
+        compass = self.painter.draw_compass(
+            surf, self.small, self.camera, (right - 60, legend.bottom + 60)
+        )
+        if compass is not None:
+            self.hud.rects.append(compass)
         if self.show_help:
             self.hud.draw_help(surf, CONTROLS, show.description)
         return surf
@@ -604,23 +608,16 @@ class App:
         return [*self.finished, *([now] if now is not None and now.steps else [])]
 
 
-def _controller_forces(ctrl: Any) -> tuple[dict[str, Vec], dict[str, Vec]]:
-    """The controller's last hover, drive, grip and push forces (N) if it reports them, and where
-    they act (m): hover and drive at the probe's ground point, grip at the hand's anchor."""
-    forces = getattr(ctrl, "last_forces", None)
-    out: dict[str, Vec] = {}
-    at: dict[str, Vec] = {}
-    if forces is None:
-        return out, at
-    for kind in ("hover", "drive", "grip", "push"):
-        v = getattr(forces, kind, None)
-        if v is not None:
-            out[kind] = (float(v[0]), float(v[1]))
-    probe = getattr(ctrl, "probe", None)
-    if probe is not None:
-        at["hover"] = at["drive"] = (float(probe.point[0]), float(probe.point[1]))
-    joint = getattr(ctrl, "joint", None)
-    if joint is not None:
-        a = joint.a.local_to_world(joint.anchor_a)
-        at["grip"] = (a.x, a.y)
-    return out, at
+def _overlay_hint(show: Show, current: Overlay) -> Overlay:
+    """The overlays the level asks for in its ``[view]`` table (else the ones on now)."""
+    names = getattr(getattr(getattr(show.scene, "level", None), "view", None), "overlays", None)
+    return Overlay.from_names(names) if names is not None else current
+
+
+def _scope_body(show: Show) -> dict[str, Any]:
+    """The scope's body (the player) and its weight m·g (N; g₀ where it feels no gravity)."""
+    p = show.player
+    if p is None or p not in show.world.names:
+        return {}
+    g = math.hypot(*show.world.gravity_at(p))
+    return {"name": p, "weight": show.world.body(p).mass * (g if g > 0.0 else G0)}

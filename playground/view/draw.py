@@ -1,25 +1,24 @@
-"""Drawing the world: shapes, joints, contact points and force arrows with their legend.
+"""Drawing the world's bodies and joints: every shape by its true outline, filled and outlined with
+anti-aliased edges, at any angle and zoom; joints by their kind (pivot, pin, slide, groove, spring
+and a controller's grip); bodies coloured by type (static, kinematic, dynamic) and actors by role
+(player, enemy, other). Also the anti-aliased arrow and the legend every overlay uses.
 
-Everything here only *reads* the world. Force arrows are scaled per body by its own weight, so that
-a 10 kg crate and a 5 t whale both show readable arrows: with ``x = |F| / (m·g₀)`` (g₀ = 9.81 m/s²,
-a fixed reference, so that a body whose gravity is nullified still has a scale), an arrow is
-``WEIGHT_PX·x`` pixels long up to one weight and ``WEIGHT_PX·(1 + ln x)`` beyond, capped at
-``MAX_ARROW_PX``. One weight is always the same on-screen length; a tenfold impact spike is only
-3.3 weights long instead of leaving the window. Perceived up is a unit arrow of fixed length.
+A capsule (a segment with a radius) is one closed outline: two half circles joined by straight
+sides, computed in screen space, so it keeps its area and its outline at every angle:
 
->>> round(arrow_pixels(98.1, 10.0), 6), round(arrow_pixels(5000.0 * 9.81, 5000.0), 6)
-(60.0, 60.0)
->>> round(arrow_pixels(10.0 * 98.1, 10.0), 1)
-198.2
+>>> pts = capsule_outline((0.0, 0.0), (10.0, 0.0), 5.0)
+>>> len(pts) >= 2 * MIN_ARC_POINTS, round(min(p[1] for p in pts), 6), round(max(p[0] for p in pts))
+(True, -5.0, 15)
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 import pygame
+import pygame.gfxdraw
 import pymunk
 
 from playground.view.camera import Camera
@@ -27,27 +26,30 @@ from playground.world import World
 
 __all__ = [
     "COLOURS",
-    "LEGEND",
-    "Arrow",
-    "Overlay",
-    "arrow_pixels",
-    "body_arrows",
-    "draw_arrows",
+    "ROLES",
+    "Grip",
+    "LegendEntry",
+    "capsule_outline",
+    "draw_arrow",
     "draw_grid",
     "draw_legend",
     "draw_world",
+    "outlined_polygon",
 ]
 
 Vec = tuple[float, float]
 Colour = tuple[int, int, int]
 
-G0 = 9.81  # m/s²: the reference weight per kilogram for arrow scaling
-WEIGHT_PX = 60.0  # px: on-screen length of a force equal to the body's weight m·g₀
-MAX_ARROW_PX = 260.0  # px: no arrow longer than this
-UP_PX = 45.0  # px: length of the perceived-up unit arrow
-UP_OFFSET_PX = 8.0  # px: the up arrow runs this far beside the force arrows
-MIN_ARROW_PX = 2.0  # px: shorter arrows are not drawn
 COORD_LIMIT = 1.0e5  # px: points are clamped here so far-away geometry never overflows SDL
+MIN_ARC_POINTS = 8  # outline points per half circle of a small capsule end
+MAX_ARC_POINTS = 48  # … and of a large one (one point per px of radius in between)
+MIN_RADIUS_PX = 1.5  # px: thinner segments (a floor line of radius 0) are drawn this thick
+JOINT_DOT_PX = 4  # px: radius of a joint's anchor dot
+HAND_PX = 5  # px: radius of the hand drawn where a grip holds
+SWATCH_PX = 26  # px: length of a legend swatch
+
+ROLES = ("player", "enemy", "other")
+"""Actor roles: the player the keyboard drives, enemies (what X nullifies), anyone else."""
 
 COLOURS: dict[str, Colour] = {
     "background": (22, 24, 30),
@@ -56,58 +58,37 @@ COLOURS: dict[str, Colour] = {
     "kinematic": (80, 140, 200),
     "dynamic": (196, 164, 112),
     "player": (236, 208, 92),
-    "actor": (220, 110, 90),
+    "enemy": (225, 90, 80),
+    "other": (120, 220, 170),
+    "nullify": (255, 120, 220),
     "joint": (160, 200, 160),
     "contact": (255, 230, 60),
+    "normal": (255, 255, 140),
+    "friction": (255, 120, 40),
+    "joint_force": (170, 255, 170),
     "support": (110, 210, 120),
     "support_filtered": (255, 60, 200),
     "gravity": (90, 150, 255),
     "hover": (255, 160, 40),
     "drive": (40, 220, 220),
     "grip": (255, 70, 70),
+    "hand": (250, 150, 150),
     "push": (190, 120, 255),
+    "reaction": (255, 200, 200),
+    "perceived": (150, 200, 255),
     "up": (245, 245, 245),
+    "text": (225, 228, 235),
+    "dim": (150, 155, 165),
 }
 
-LEGEND: tuple[tuple[str, str], ...] = (
-    ("support", "support force, raw (thin)"),
-    ("support_filtered", "support force, filtered (thick)"),
-    ("gravity", "gravity m·g"),
-    ("hover", "hover spring"),
-    ("drive", "drive"),
-    ("grip", "grip"),
-    ("push", "push"),
-    ("up", "perceived up (unit)"),
-    ("contact", "contact point"),
-)
-
 
 @dataclass(frozen=True, slots=True)
-class Overlay:
-    """What to draw on top of the shapes."""
+class Grip:
+    """A controller's grip: its joint and the point of its body the hand reaches from (the top of
+    the capsule, m, world)."""
 
-    vectors: bool = True
-    contacts: bool = True
-    joints: bool = True
-
-
-@dataclass(frozen=True, slots=True)
-class Arrow:
-    """A force arrow: where (m), the force (N), its colour key, and thick or thin."""
-
-    origin: Vec
-    force: Vec
-    kind: str
-    thick: bool = False
-
-
-def arrow_pixels(force: float, mass: float) -> float:
-    """On-screen length (px) of a force of magnitude ``force`` (N) on a body of ``mass`` (kg)."""
-    if not (mass > 0.0 and math.isfinite(mass) and math.isfinite(force)):
-        return 0.0
-    x = abs(force) / (mass * G0)
-    length = WEIGHT_PX * x if x <= 1.0 else WEIGHT_PX * (1.0 + math.log(x))
-    return min(length, MAX_ARROW_PX)
+    joint: pymunk.Constraint
+    shoulder: Vec
 
 
 def _clamp(p: Vec) -> tuple[float, float]:
@@ -117,20 +98,46 @@ def _clamp(p: Vec) -> tuple[float, float]:
     )
 
 
-def _kind_colour(body: pymunk.Body, player: pymunk.Body | None, actors: set[int]) -> Colour:
-    if player is not None and body is player:
-        return COLOURS["player"]
-    if body.id in actors:
-        return COLOURS["actor"]
-    if body.body_type == pymunk.Body.STATIC:
-        return COLOURS["static"]
-    if body.body_type == pymunk.Body.KINEMATIC:
-        return COLOURS["kinematic"]
-    return COLOURS["dynamic"]
-
-
 def _shade(c: Colour, f: float) -> Colour:
     return (min(int(c[0] * f), 255), min(int(c[1] * f), 255), min(int(c[2] * f), 255))
+
+
+def outlined_polygon(
+    surf: pygame.Surface, fill: Colour | None, edge: Colour, points: Sequence[Vec]
+) -> None:
+    """Fill a closed outline (screen px) and stroke it with an anti-aliased edge on the fill's
+    border (``fill`` None: outline only). SDL_gfx's filled and anti-aliased polygons rasterise
+    the same edges, so the stroke covers the fill's border exactly."""
+    pts = [_clamp(p) for p in points]
+    if len(pts) < 3:
+        return
+    if fill is not None:
+        pygame.gfxdraw.filled_polygon(surf, pts, fill)
+    pygame.gfxdraw.aapolygon(surf, pts, edge)
+
+
+def capsule_outline(a: Vec, b: Vec, radius: float) -> list[Vec]:
+    """The closed outline (px) of a capsule from ``a`` to ``b`` (px) of ``radius`` (px)."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    base = math.atan2(dy, dx) if (dx, dy) != (0.0, 0.0) else 0.0
+    n = min(max(round(radius), MIN_ARC_POINTS), MAX_ARC_POINTS)
+    out: list[Vec] = []
+    for centre, start in ((b, base - math.pi / 2.0), (a, base + math.pi / 2.0)):
+        for k in range(n + 1):
+            t = start + math.pi * k / n
+            out.append((centre[0] + radius * math.cos(t), centre[1] + radius * math.sin(t)))
+    return out
+
+
+def _circle_outline(c: Vec, radius: float) -> list[Vec]:
+    n = 2 * min(max(round(radius), MIN_ARC_POINTS), MAX_ARC_POINTS)
+    return [
+        (
+            c[0] + radius * math.cos(2 * math.pi * k / n),
+            c[1] + radius * math.sin(2 * math.pi * k / n),
+        )
+        for k in range(n)
+    ]
 
 
 def _draw_shape(
@@ -143,48 +150,106 @@ def _draw_shape(
     edge = colour
     if isinstance(shape, pymunk.Circle):
         c = body.local_to_world(shape.offset)
-        r = max(cam.pixels(shape.radius), 1.0)
-        sc = _clamp(cam.to_screen((c.x, c.y)))
-        pygame.draw.circle(surf, fill, sc, r)
-        pygame.draw.circle(surf, edge, sc, r, 1)
+        sc = cam.to_screen((c.x, c.y))
+        r = max(cam.pixels(shape.radius), MIN_RADIUS_PX)
+        outlined_polygon(surf, fill, edge, _circle_outline(sc, r))
         # A spoke shows the rotation.
-        tip = body.local_to_world(shape.offset + pymunk.Vec2d(shape.radius, 0.0).rotated(0.0))
-        pygame.draw.line(surf, edge, sc, _clamp(cam.to_screen((tip.x, tip.y))), 1)
+        tip = body.local_to_world(shape.offset + pymunk.Vec2d(shape.radius, 0.0))
+        pygame.draw.aaline(surf, edge, _clamp(sc), _clamp(cam.to_screen((tip.x, tip.y))))
     elif isinstance(shape, pymunk.Segment):
         a = body.local_to_world(shape.a)
         b = body.local_to_world(shape.b)
-        sa = _clamp(cam.to_screen((a.x, a.y)))
-        sb = _clamp(cam.to_screen((b.x, b.y)))
-        r = cam.pixels(shape.radius)
-        if r >= 1.5:
-            # A capsule: a thick band with round caps.
-            pygame.draw.line(surf, fill, sa, sb, max(round(2 * r), 1))
-            pygame.draw.circle(surf, fill, sa, r)
-            pygame.draw.circle(surf, fill, sb, r)
-            d = (b - a).normalized().perpendicular() * shape.radius
-            for s in (1.0, -1.0):
-                p = _clamp(cam.to_screen((a.x + s * d.x, a.y + s * d.y)))
-                q = _clamp(cam.to_screen((b.x + s * d.x, b.y + s * d.y)))
-                pygame.draw.line(surf, edge, p, q, 1)
-        else:
-            pygame.draw.line(surf, edge, sa, sb, max(round(2 * r), 2))
+        r = max(cam.pixels(shape.radius), MIN_RADIUS_PX)
+        sa, sb = cam.to_screen((a.x, a.y)), cam.to_screen((b.x, b.y))
+        outlined_polygon(surf, fill, edge, capsule_outline(sa, sb, r))
     elif isinstance(shape, pymunk.Poly):
-        pts = [
-            _clamp(cam.to_screen((p.x, p.y)))
-            for p in (body.local_to_world(v) for v in shape.get_vertices())
-        ]
-        if len(pts) >= 3:
-            pygame.draw.polygon(surf, fill, pts)
-            pygame.draw.polygon(surf, edge, pts, 1)
+        pts = [cam.to_screen((p.x, p.y)) for p in map(body.local_to_world, shape.get_vertices())]
+        outlined_polygon(surf, fill, edge, pts)
 
 
-def _anchor(c: pymunk.Constraint, which: str) -> Vec | None:
-    body = c.a if which == "a" else c.b
-    local = getattr(c, "anchor_" + which, None)
-    if local is None:
-        return None
-    w = body.local_to_world(local)
-    return (w.x, w.y)
+def _body_colour(body: pymunk.Body, roles: Mapping[int, str]) -> Colour:
+    role = roles.get(body.id)
+    if role is not None:
+        return COLOURS[role]
+    if body.body_type == pymunk.Body.STATIC:
+        return COLOURS["static"]
+    if body.body_type == pymunk.Body.KINEMATIC:
+        return COLOURS["kinematic"]
+    return COLOURS["dynamic"]
+
+
+def _draw_joint(surf: pygame.Surface, cam: Camera, c: pymunk.Constraint) -> None:
+    colour = COLOURS["joint"]
+
+    def world(body: pymunk.Body, local: pymunk.Vec2d) -> Vec:
+        w = body.local_to_world(local)
+        return _clamp(cam.to_screen((w.x, w.y)))
+
+    if isinstance(c, pymunk.GrooveJoint):
+        g0, g1 = world(c.a, c.groove_a), world(c.a, c.groove_b)
+        pygame.draw.line(surf, colour, g0, g1, 3)
+        pygame.draw.circle(surf, colour, world(c.b, c.anchor_b), JOINT_DOT_PX)
+        return
+    anchors = [
+        world(body, getattr(c, "anchor_" + which))
+        for body, which in ((c.a, "a"), (c.b, "b"))
+        if hasattr(c, "anchor_" + which)
+    ]
+    if len(anchors) < 2:
+        # Rotary joints, gears and motors have no anchor points to draw.
+        return
+    sa, sb = anchors
+    if isinstance(c, pymunk.PivotJoint):
+        # A pin through both bodies: a ring with a cross.
+        for p in (sa, sb):
+            pygame.draw.circle(surf, colour, p, JOINT_DOT_PX + 2, 2)
+            pygame.draw.aaline(surf, colour, (p[0] - 4, p[1]), (p[0] + 4, p[1]))
+            pygame.draw.aaline(surf, colour, (p[0], p[1] - 4), (p[0], p[1] + 4))
+        pygame.draw.aaline(surf, colour, sa, sb)
+        return
+    if isinstance(c, pymunk.DampedSpring):
+        _zigzag(surf, colour, sa, sb)
+    elif isinstance(c, pymunk.SlideJoint):
+        _dashed(surf, colour, sa, sb)
+    else:
+        pygame.draw.line(surf, colour, sa, sb, 2)
+    for p in (sa, sb):
+        pygame.draw.circle(surf, colour, p, JOINT_DOT_PX)
+
+
+def _dashed(surf: pygame.Surface, colour: Colour, a: Vec, b: Vec, dash: float = 6.0) -> None:
+    n = math.hypot(b[0] - a[0], b[1] - a[1])
+    k = max(int(n // dash), 1)
+    for i in range(0, k, 2):
+        t0, t1 = i / k, min((i + 1) / k, 1.0)
+        p = (a[0] + (b[0] - a[0]) * t0, a[1] + (b[1] - a[1]) * t0)
+        q = (a[0] + (b[0] - a[0]) * t1, a[1] + (b[1] - a[1]) * t1)
+        pygame.draw.line(surf, colour, p, q, 2)
+
+
+def _zigzag(surf: pygame.Surface, colour: Colour, a: Vec, b: Vec, turns: int = 8) -> None:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy)
+    if n < 1.0:
+        return
+    px, py = -dy / n * 4.0, dx / n * 4.0
+    pts = [a]
+    for i in range(1, 2 * turns):
+        s = 1.0 if i % 2 else -1.0
+        t = i / (2 * turns)
+        pts.append((a[0] + dx * t + s * px, a[1] + dy * t + s * py))
+    pts.append(b)
+    pygame.draw.aalines(surf, colour, False, pts)
+
+
+def _draw_grip(surf: pygame.Surface, cam: Camera, grip: Grip) -> None:
+    """The arm from the top of the capsule to where the hand holds, and the hand."""
+    j = grip.joint
+    held = j.b.local_to_world(getattr(j, "anchor_b", pymunk.Vec2d(0.0, 0.0)))
+    hand = _clamp(cam.to_screen((held.x, held.y)))
+    shoulder = _clamp(cam.to_screen(grip.shoulder))
+    pygame.draw.line(surf, COLOURS["hand"], shoulder, hand, 4)
+    pygame.draw.circle(surf, COLOURS["hand"], hand, HAND_PX)
 
 
 def draw_world(
@@ -192,110 +257,53 @@ def draw_world(
     cam: Camera,
     world: World,
     *,
-    player: pymunk.Body | None = None,
-    actors: Iterable[pymunk.Body] = (),
-    overlay: Overlay = Overlay(),
+    roles: Mapping[str, str] | None = None,
+    grips: Iterable[Grip] = (),
 ) -> None:
-    """Draw every shape of the world, its joints and (optionally) the tracked bodies' contacts."""
-    actor_ids = {b.id for b in actors}
+    """Draw every shape of the world (actors by ``roles``: body name → role) and every joint;
+    the controllers' ``grips`` as an arm and a hand."""
+    by_id = {world.body(n).id: r for n, r in (roles or {}).items() if n in world.names}
     for shape in world.space.shapes:
         body = shape.body
         if body is None:
             continue
         sleeping = body.body_type == pymunk.Body.DYNAMIC and body.is_sleeping
-        _draw_shape(surf, cam, shape, _kind_colour(body, player, actor_ids), sleeping)
-    if overlay.joints:
-        for c in world.space.constraints:
-            a = _anchor(c, "a")
-            b = _anchor(c, "b")
-            if isinstance(c, pymunk.GrooveJoint):
-                g0, g1 = c.a.local_to_world(c.groove_a), c.a.local_to_world(c.groove_b)
-                pygame.draw.line(
-                    surf,
-                    COLOURS["joint"],
-                    _clamp(cam.to_screen((g0.x, g0.y))),
-                    _clamp(cam.to_screen((g1.x, g1.y))),
-                    2,
-                )
-                a = b  # the anchor slides along the groove: draw the groove and the anchor
-            if a is None or b is None:
-                # Rotary joints, gears and motors have no anchor points to draw.
-                continue
-            sa = _clamp(cam.to_screen(a))
-            sb = _clamp(cam.to_screen(b))
-            pygame.draw.line(surf, COLOURS["joint"], sa, sb, 2)
-            pygame.draw.circle(surf, COLOURS["joint"], sa, 3)
-            pygame.draw.circle(surf, COLOURS["joint"], sb, 3)
-    if overlay.contacts:
-        points: list[Vec] = []
-
-        def collect(arb: pymunk.Arbiter) -> None:
-            for cp in arb.contact_point_set.points:
-                points.append((cp.point_a.x, cp.point_a.y))
-
-        for body in world.solver.bodies:
-            body.each_arbiter(collect)
-        for p in points:
-            pygame.draw.circle(surf, COLOURS["contact"], _clamp(cam.to_screen(p)), 3)
+        _draw_shape(surf, cam, shape, _body_colour(body, by_id), sleeping)
+    gripping = [g for g in grips]
+    grip_joints = {id(g.joint) for g in gripping}
+    for c in world.space.constraints:
+        if id(c) not in grip_joints:
+            _draw_joint(surf, cam, c)
+    for g in gripping:
+        _draw_grip(surf, cam, g)
 
 
-def body_arrows(
-    world: World,
-    name: str,
-    controller_forces: Mapping[str, Vec] | None = None,
-    origins: Mapping[str, Vec] | None = None,
-) -> list[Arrow]:
-    """The force arrows of one tracked body: support raw and filtered, gravity, and the
-    controller's own forces (``controller_forces``: kind → N, e.g. hover, drive, grip, push),
-    drawn from where they act when known (``origins``: kind → m; default the centre of mass)."""
-    body = world.body(name)
-    c = body.local_to_world(body.center_of_gravity)
-    origin = (c.x, c.y)
-    m = body.mass
-    out: list[Arrow] = []
-    reading = world.forces(name)
-    g = world.gravity_at(name)
-    out.append(Arrow(origin, (m * g[0], m * g[1]), "gravity"))
-    out.append(Arrow(origin, reading.support, "support"))
-    pg = world.perceived_gravity(name)
-    out.append(Arrow(origin, (-m * pg[0], -m * pg[1]), "support_filtered", thick=True))
-    for kind, f in (controller_forces or {}).items():
-        if kind in COLOURS:
-            out.append(Arrow((origins or {}).get(kind, origin), f, kind))
-    return out
-
-
-def draw_arrows(
-    surf: pygame.Surface,
-    cam: Camera,
-    arrows: Iterable[Arrow],
-    mass: float,
-    up: tuple[Vec, Vec] | None = None,
-) -> None:
-    """Draw the ``arrows`` of a body of ``mass`` (kg) and, if given, ``up`` = (origin m, unit
-    vector): its perceived up."""
-    # Thick (filtered) arrows first, so the thin raw ones stay visible on top of them.
-    for arrow in sorted(arrows, key=lambda a: not a.thick):
-        fx, fy = arrow.force
-        n = math.hypot(fx, fy)
-        length = arrow_pixels(n, mass)
-        if length < MIN_ARROW_PX:
-            continue
-        sx, sy = cam.vector((fx / n, fy / n))
-        k = length / math.hypot(sx, sy)
-        width = 5 if arrow.thick else 2
-        _arrow(surf, COLOURS[arrow.kind], cam.to_screen(arrow.origin), (sx * k, sy * k), width)
-    if up is not None:
-        origin, (ux, uy) = up
-        n = math.hypot(ux, uy)
-        if math.isfinite(n) and n > 0.0:
-            sx, sy = cam.vector((ux / n, uy / n))
-            k = UP_PX / math.hypot(sx, sy)
-            # Beside the force arrows (UP_OFFSET_PX to the right of up), not on top of them.
-            o = cam.to_screen(origin)
-            side = (-sy * k * UP_OFFSET_PX / UP_PX, sx * k * UP_OFFSET_PX / UP_PX)
-            start = (o[0] - side[0], o[1] - side[1])
-            _arrow(surf, COLOURS["up"], start, (sx * k, sy * k), 1)
+def draw_arrow(surf: pygame.Surface, colour: Colour, start: Vec, d: Vec, width: int) -> None:
+    """An arrow from ``start`` along ``d`` (px), ``width`` px wide, with anti-aliased edges."""
+    start = _clamp(start)
+    n = math.hypot(*d)
+    if not math.isfinite(n) or n < 1.0:
+        return
+    ux, uy = d[0] / n, d[1] / n
+    head = min(8.0 + 1.5 * width, 0.45 * n)
+    half = max(width / 2.0, 0.5)
+    # The shaft stops where the head starts, so a thick shaft never pokes past the tip.
+    sx, sy = start[0] + ux * (n - head), start[1] + uy * (n - head)
+    end = (start[0] + d[0], start[1] + d[1])
+    if width <= 1:
+        pygame.draw.aaline(surf, colour, start, (sx, sy))
+    else:
+        px, py = -uy * half, ux * half
+        shaft = [
+            (start[0] + px, start[1] + py),
+            (sx + px, sy + py),
+            (sx - px, sy - py),
+            (start[0] - px, start[1] - py),
+        ]
+        outlined_polygon(surf, colour, colour, shaft)
+    wing = head * 0.5 + half
+    tip = [end, (sx - uy * wing, sy + ux * wing), (sx + uy * wing, sy - ux * wing)]
+    outlined_polygon(surf, colour, colour, tip)
 
 
 def draw_grid(surf: pygame.Surface, cam: Camera) -> None:
@@ -322,35 +330,50 @@ def draw_grid(surf: pygame.Surface, cam: Camera) -> None:
         y += spacing
 
 
-def _arrow(surf: pygame.Surface, colour: Colour, start: Vec, d: Vec, width: int) -> None:
-    start = _clamp(start)
-    end = (start[0] + d[0], start[1] + d[1])
-    pygame.draw.line(surf, colour, start, end, width)
-    n = math.hypot(*d)
-    if n < 1.0:
-        return
-    ux, uy = d[0] / n, d[1] / n
-    head = min(10.0 + width, 0.4 * n)
-    left = (end[0] - head * (ux - 0.5 * uy), end[1] - head * (uy + 0.5 * ux))
-    right = (end[0] - head * (ux + 0.5 * uy), end[1] - head * (uy - 0.5 * ux))
-    pygame.draw.polygon(surf, colour, [end, left, right])
+@dataclass(frozen=True, slots=True)
+class LegendEntry:
+    """One legend line: a colour key, its text, and how its swatch looks (``line``, ``thick``,
+    ``dot``, ``ring``, or ``scale``: a bar ``length`` px long)."""
+
+    kind: str
+    text: str
+    swatch: str = "line"
+    length: float = 20.0
 
 
-def draw_legend(surf: pygame.Surface, font: pygame.font.Font, topleft: Vec) -> pygame.Rect:
-    """Draw the arrow legend; returns the rectangle it covers."""
-    x, y = int(topleft[0]), int(topleft[1])
+def draw_legend(
+    surf: pygame.Surface, font: pygame.font.Font, entries: Sequence[LegendEntry], topright: Vec
+) -> pygame.Rect:
+    """Draw ``entries`` in a panel whose top-right corner is ``topright``; returns its rect."""
+    if not entries:
+        return pygame.Rect(int(topright[0]), int(topright[1]), 0, 0)
     line = font.get_linesize()
-    width = max(font.size(text)[0] for _, text in LEGEND) + 36
-    rect = pygame.Rect(x, y, width, line * len(LEGEND) + 8)
+    sw = SWATCH_PX + 12
+
+    def indent(e: LegendEntry) -> int:
+        return int(max(e.length, SWATCH_PX) + 12) if e.swatch == "scale" else sw
+
+    width = max(font.size(e.text)[0] + indent(e) for e in entries) + 8
+    rect = pygame.Rect(0, int(topright[1]), width, line * len(entries) + 8)
+    rect.right = int(topright[0])
     panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-    panel.fill((0, 0, 0, 150))
+    panel.fill((0, 0, 0, 190))
     surf.blit(panel, rect.topleft)
-    for i, (kind, text) in enumerate(LEGEND):
-        cy = y + 4 + i * line + line // 2
-        thick = 5 if kind == "support_filtered" else 2
-        if kind == "contact":
-            pygame.draw.circle(surf, COLOURS[kind], (x + 16, cy), 3)
+    x = rect.x
+    for i, e in enumerate(entries):
+        cy = rect.y + 4 + i * line + line // 2
+        colour = COLOURS[e.kind]
+        if e.swatch == "dot":
+            pygame.draw.circle(surf, colour, (x + 6 + SWATCH_PX // 2, cy), 3)
+        elif e.swatch == "ring":
+            pygame.draw.circle(surf, colour, (x + 6 + SWATCH_PX // 2, cy), 6, 2)
+        elif e.swatch == "scale":
+            x0, x1 = x + 6, x + 6 + e.length
+            pygame.draw.line(surf, colour, (x0, cy), (x1, cy), 2)
+            pygame.draw.line(surf, colour, (x0, cy - 4), (x0, cy + 4), 2)
+            pygame.draw.line(surf, colour, (x1, cy - 4), (x1, cy + 4), 2)
         else:
-            pygame.draw.line(surf, COLOURS[kind], (x + 6, cy), (x + 26, cy), thick)
-        surf.blit(font.render(text, True, (220, 220, 220)), (x + 32, cy - line // 2))
+            thick = 5 if e.swatch == "thick" else 2
+            draw_arrow(surf, colour, (x + 6, cy), (SWATCH_PX, 0.0), thick)
+        surf.blit(font.render(e.text, True, COLOURS["text"]), (x + indent(e), cy - line // 2))
     return rect

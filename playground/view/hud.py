@@ -1,11 +1,5 @@
-"""The heads-up display: title, clocks and rates, stage costs, player state, and an oscilloscope
-strip of the player's |support force|, raw and filtered, over the last seconds of simulated time.
-
->>> scope = Scope(seconds=1.0, dt=0.25)
->>> for k in range(6):
-...     scope.push(float(k), float(k) / 2)
->>> scope.raw.tolist(), scope.filtered.tolist()
-([2.0, 3.0, 4.0, 5.0], [1.0, 1.5, 2.0, 2.5])
+"""The heads-up display: title, clocks and rates, stage costs, player state, the oscilloscope
+strip (:mod:`playground.view.scope`) and the help overlay, every panel inside the window.
 """
 
 from __future__ import annotations
@@ -14,58 +8,19 @@ import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
-import numpy as np
 import pygame
-from numpy.typing import NDArray
 
 from playground.view.draw import COLOURS
+from playground.view.scope import Scope, draw_scope
 from playground.world import Stage, StageTiming
 
-__all__ = ["Hud", "HudInfo", "Scope", "StageCosts"]
+__all__ = ["Hud", "HudInfo", "StageCosts"]
 
 TEXT = (225, 228, 235)
 DIM = (150, 155, 165)
 PANEL = (0, 0, 0, 160)
+HELP_PANEL = (12, 14, 20, 240)  # nearly opaque: the help must read over a busy scene
 MARGIN = 8  # px between panels and the window's edge
-
-
-class Scope:
-    """A ring buffer of |support| raw and filtered (N), one sample per physics step.
-
-    ``seconds`` of history at step ``dt`` (s); :attr:`raw` and :attr:`filtered` are oldest first.
-    """
-
-    def __init__(self, seconds: float = 4.0, dt: float = 1.0 / 120.0) -> None:
-        if not (seconds > 0.0 and dt > 0.0):
-            raise ValueError(f"seconds, dt: expected numbers > 0, got {seconds!r}, {dt!r}")
-        self.capacity = max(round(seconds / dt), 2)
-        self._raw = np.zeros(self.capacity)
-        self._filtered = np.zeros(self.capacity)
-        self._count = 0
-
-    def push(self, raw: float, filtered: float) -> None:
-        """Add one step's |support| raw and filtered, N."""
-        i = self._count % self.capacity
-        self._raw[i] = raw
-        self._filtered[i] = filtered
-        self._count += 1
-
-    def clear(self) -> None:
-        self._count = 0
-
-    def _ordered(self, a: NDArray[np.float64]) -> NDArray[np.float64]:
-        if self._count <= self.capacity:
-            return a[: self._count].copy()
-        i = self._count % self.capacity
-        return np.concatenate([a[i:], a[:i]])
-
-    @property
-    def raw(self) -> NDArray[np.float64]:
-        return self._ordered(self._raw)
-
-    @property
-    def filtered(self) -> NDArray[np.float64]:
-        return self._ordered(self._filtered)
 
 
 class StageCosts:
@@ -116,9 +71,14 @@ class Hud:
         self.small = small
         self.rects: list[pygame.Rect] = []
 
-    def _panel(self, surf: pygame.Surface, rect: pygame.Rect) -> None:
+    def _panel(
+        self,
+        surf: pygame.Surface,
+        rect: pygame.Rect,
+        colour: tuple[int, int, int, int] = PANEL,
+    ) -> None:
         panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-        panel.fill(PANEL)
+        panel.fill(colour)
         surf.blit(panel, rect.topleft)
         self.rects.append(rect)
 
@@ -163,28 +123,10 @@ class Hud:
 
     def _scope(self, surf: pygame.Surface, scope: Scope) -> None:
         sw, sh = surf.get_size()
-        height = max(min(90, sh // 6), 30)
+        height = max(min(110, sh // 5), 40)
         rect = pygame.Rect(MARGIN, sh - height - MARGIN, sw - 2 * MARGIN, height)
         self._panel(surf, rect)
-        raw, filt = scope.raw, scope.filtered
-        label = self.small.render("|support| raw / filtered, N", True, DIM)
-        # Scaled by the filtered signal (its peak at mid-height): raw impact spikes, often 20× the
-        # weight, are clipped at the top instead of flattening everything else.
-        top = 2.0 * float(filt.max()) if filt.size else 0.0
-        top = top if top > 0.0 else 1.0
-        surf.blit(self.small.render(f"{top:.0f} N", True, DIM), (rect.x + 4, rect.y + 2))
-        surf.blit(label, (rect.right - label.get_width() - 4, rect.y + 2))
-        if raw.size < 2:
-            return
-        n = scope.capacity
-        xs = rect.x + 2 + np.arange(raw.size) * (rect.width - 4) / (n - 1)
-        for data, colour, width in (
-            (raw, COLOURS["support"], 1),
-            (filt, COLOURS["support_filtered"], 2),
-        ):
-            ys = rect.bottom - 2 - np.clip(data / top, 0.0, 1.0) * (rect.height - 4)
-            pts = np.column_stack([xs, ys]).tolist()
-            pygame.draw.lines(surf, colour, False, pts, width)
+        draw_scope(surf, self.small, scope, rect)
 
     def draw_help(
         self, surf: pygame.Surface, lines: Sequence[tuple[str, str]], about: str = ""
@@ -201,10 +143,11 @@ class Hud:
         rows = len(wrapped) + (1 if wrapped else 0) + len(lines)
         rect = pygame.Rect(0, 0, width, min(h * rows + 16, sh - 2 * MARGIN))
         rect.center = (sw // 2, sh // 2)
-        self._panel(surf, rect)
+        self._panel(surf, rect, HELP_PANEL)
+        pygame.draw.rect(surf, DIM, rect, 1)
         y = rect.y + 8
         for text in wrapped:
-            surf.blit(font.render(text, True, DIM), (rect.x + 12, y))
+            surf.blit(font.render(text, True, TEXT), (rect.x + 12, y))
             y += h
         if wrapped:
             y += h
