@@ -183,7 +183,7 @@ def cmd_figures(args: argparse.Namespace) -> int:
     from playground.figures import make_all
 
     try:
-        paths = make_all(Path(args.out))
+        paths = make_all(Path(args.out), progress=not args.no_progress)
     except ImportError as exc:
         print(
             f"playground figures: needs matplotlib: pip install 'pymunk-playground[bench]' ({exc})",
@@ -247,6 +247,7 @@ def parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("figures", help="regenerate the teaching chapters' figures (headless)")
     p.add_argument("--out", default="docs/img/chapters", metavar="DIR", help="default: %(default)s")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     p.set_defaults(func=cmd_figures)
 
     p = sub.add_parser("schema", help="print the level JSON Schema")

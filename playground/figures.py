@@ -545,6 +545,51 @@ def ch4_tuned_lag() -> float:
     return dict(betas)[beta]
 
 
+def euro_ramp_lag(min_cutoff: float, beta: float, slope: float, dt: float) -> float:
+    """The 1€ filter's lag on a ramp, s: the fixed point of
+
+        L = 1/(2π·(min_cutoff + β·s·(1 + L/Te)))
+
+    On a ramp of slope s (unit/s) the filter's output trails by L, and the derivative is taken
+    against the previous *filtered* value, so the speed it sees is (X_i − X̂_{i−1})/Te =
+    s·(Te + L)/Te; its cutoff is min_cutoff + β·s·(1 + L/Te), and an exponential average of
+    cutoff fc trails a ramp by exactly τ = 1/(2π·fc), also in discrete time. The right side falls
+    as L grows, so there is one fixed point, found by bisection between 0 and τ(min_cutoff).
+
+    >>> round(euro_ramp_lag(1.0, 0.0, 9.81, 1 / 120), 4)   # β = 0: τ of 1 Hz
+    0.1592
+    """
+    lo, hi = 0.0, 1.0 / (2.0 * math.pi * min_cutoff)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        rhs = 1.0 / (2.0 * math.pi * (min_cutoff + beta * slope * (1.0 + mid / dt)))
+        lo, hi = (mid, hi) if rhs > mid else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def ch4_lag_euro_fixed() -> float:
+    """The fixed-point lag of perception's 1€ filter (2 Hz, β 0.05) on a ramp of g per second,
+    s."""
+    return euro_ramp_lag(2.0, 0.05, G, DT)
+
+
+def ch4_tuned_lag_fixed() -> float:
+    """The fixed-point lag of the tuned 1€ filter (chosen min_cutoff and β), s."""
+    _, cutoff, _, beta = tuning()
+    return euro_ramp_lag(cutoff, beta, G, DT)
+
+
+def ch4_euro_seen_speed() -> float:
+    """The speed perception's 1€ filter sees on the ramp of g per second: s·(1 + L/Te),
+    m/s³."""
+    return G * (1.0 + ch4_lag_euro_fixed() / DT)
+
+
+def ch4_euro_cutoff_on_ramp() -> float:
+    """The cutoff perception's 1€ filter opens to on that ramp: 2 Hz + β·s·(1 + L/Te), Hz."""
+    return 2.0 + 0.05 * ch4_euro_seen_speed()
+
+
 def ch4_spike_euro() -> float:
     return spike_peak(CH4_FILTERS["1€ 2 Hz, β 0.05"])  # type: ignore[arg-type]
 
@@ -612,12 +657,19 @@ SWING_CUTOFF = 1e100
 """m: beyond this swing the chapter-5 spring stops pushing (it has long since blown up)."""
 
 
-def spring_growth(omega_dt: float, zeta: float, seconds: float = 2.0) -> float:
+def spring_growth(
+    omega_dt: float,
+    zeta: float,
+    seconds: float = 2.0,
+    scheme: Literal["controller", "explicit"] = "controller",
+) -> float:
     """How much a spring's swing grows over the second half of a run (late peak / mid peak).
 
-    A 1 kg body in pymunk on the hover's spring force (:func:`playground.controller.hover_spring`,
-    k = ω², c = 2ζω, ω = omega_dt / dt), put on it every step before ``space.step`` as the hover
-    does. Above 1: it gains energy, unstable.
+    A 1 kg body in pymunk on a spring force (k = ω², c = 2ζω, ω = omega_dt / dt), put on it
+    every step before ``space.step`` as the hover does: ``controller`` is the hover's own force
+    (:func:`playground.controller.hover_spring`, spring on the height about to be used, damper on
+    the velocity after the step), ``explicit`` the naive −k·x − c·v from the state before the
+    step (explicit Euler). Above 1: it gains energy, unstable.
     """
     world = World(gravity=(0.0, 0.0))
     body = pymunk.Body(1.0, math.inf)
@@ -629,7 +681,11 @@ def spring_growth(omega_dt: float, zeta: float, seconds: float = 2.0) -> float:
     def spring(wd: World) -> None:
         x, v = body.position.x, body.velocity.x
         if math.isfinite(x) and abs(x) < SWING_CUTOFF:
-            wd.apply_force(body, (hover_spring(k, c, 1.0, -x, v, wd.config.dt), 0.0))
+            if scheme == "explicit":
+                force = -k * x - c * v
+            else:
+                force = hover_spring(k, c, 1.0, -x, v, wd.config.dt)
+            wd.apply_force(body, (force, 0.0))
 
     world.on(Stage.CONTROL, spring)
     r = _record(world, seconds, lambda wd: [abs(body.position.x)])
@@ -658,13 +714,13 @@ def ch5_undamped_per_second() -> float:
     return float(spring_growth(wh, 0.0, seconds=4.0) ** 0.5)
 
 
-def stability_limit(zeta: float) -> float:
+def stability_limit(zeta: float, scheme: Literal["controller", "explicit"] = "controller") -> float:
     """The largest 2πf·dt at which the simulated spring at damping ratio ``zeta`` does not grow,
-    by bisection to 1e-3."""
+    by bisection to 1e-3 (``scheme`` as in :func:`spring_growth`)."""
     lo, hi = 0.01, 6.0
     while hi - lo > 1e-3:
         mid = 0.5 * (lo + hi)
-        if spring_growth(mid, zeta, seconds=20.0) <= 1.0:
+        if spring_growth(mid, zeta, seconds=20.0, scheme=scheme) <= 1.0:
             lo = mid
         else:
             hi = mid
@@ -690,6 +746,26 @@ def ch5_limit_zeta1() -> float:
 
 def ch5_limit_zeta05() -> float:
     return stability_limit(0.5)
+
+
+def ch5_explicit_limit_zeta1() -> float:
+    """Stability limit on 2πf·dt of the naive spring (explicit Euler) at ζ = 1 (theory: 2ζ)."""
+    return stability_limit(1.0, "explicit")
+
+
+def ch5_explicit_undamped_per_step() -> float:
+    """Swing growth per step of an undamped naive spring (explicit Euler) at 5 Hz and
+    dt = 1/120 s, simulated (measured over two seconds)."""
+    wh = 2.0 * math.pi * ControllerConfig().hover_frequency * DT
+    per_second = spring_growth(wh, 0.0, seconds=4.0, scheme="explicit") ** 0.5
+    return float(per_second ** (1.0 / round(1.0 / DT)))
+
+
+def ch5_explicit_undamped_theory() -> float:
+    """√(1 + (2πf·dt)²): the naive undamped spring's growth per step at 5 Hz, 1/120 s (the
+    determinant of its step matrix is 1 + (2πf·dt)²)."""
+    wh = 2.0 * math.pi * ControllerConfig().hover_frequency * DT
+    return math.sqrt(1.0 + wh * wh)
 
 
 @cache
@@ -968,36 +1044,110 @@ CH7_DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240)
 
 
 @dataclass(frozen=True, slots=True)
-class AccuracyRow:
-    """One point of chapter 7: dt (s), estimator, relative error, µs per step (not quoted)."""
+class RingErrors:
+    """The bench's ring scene at one dt, reverse integration, unfiltered, read three ways.
+
+    All errors are relative to the scene's force scale m·ω²·r (1 = 100 %). Attributes:
+        dt: the step, s.
+        end: RMS error against the exact force at the *end* of each step.
+        tangential: mean tangential part of the reading's direction against the end-of-step
+            exact force (the sine of the angle between them).
+        half_turn: ω·dt/2, rad — how far the ring turns in half a step.
+        mid: RMS error against the exact force at the *middle* of each step.
+        fd_end: finite differences m·(x₂ − 2x₁ + x₀)/dt² against the end of the step.
+        fd_own: finite differences against their own mid-point: the time of their middle sample
+            x₁, the start of the step.
+    """
 
     dt: float
-    estimator: str
-    error: float
-    cost_us: float
+    end: float
+    tangential: float
+    half_turn: float
+    mid: float
+    fd_end: float
+    fd_own: float
+
+
+def _rotate(v: Array, angle: float) -> Array:
+    c, s = math.cos(angle), math.sin(angle)
+    out: Array = np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+    return out
 
 
 @cache
-def accuracy_rows() -> tuple[AccuracyRow, ...]:
-    """The ring scene of the bench (docs/accuracy.md) at each dt, reverse integration and finite
-    differences, unfiltered."""
-    from playground.bench.accuracy import Point, measure
-    from playground.bench.scenes import Knobs
+def ring_errors(dt: float) -> RingErrors:
+    """Run the bench's ring scene at ``dt`` and read its error with each convention."""
+    from playground.bench.scenes import RING_RATE, Knobs, build
 
-    rows = []
-    estimators: tuple[Literal["reverse", "finite-difference"], ...] = (
-        "reverse",
-        "finite-difference",
+    scene = build("ring", Knobs(dt=dt))
+    world = scene.world
+    body = world.body("player")
+    m = body.mass
+    n_settle = round(scene.settle / dt)
+    n_total = n_settle + round(scene.measure / dt)
+    reads, ends, positions = [], [], [np.array(body.position)]
+    for _ in range(n_total):
+        world.step()
+        reads.append(np.array(world.forces("player").support))
+        ends.append(-m * RING_RATE**2 * np.array(body.position))
+        positions.append(np.array(body.position))
+    f, e = np.array(reads)[n_settle:], np.array(ends)[n_settle:]
+    mid = np.array([_rotate(v, -0.5 * RING_RATE * dt) for v in e])
+    x = np.array(positions)
+    fd_all = m * (x[2:] - 2.0 * x[1:-1] + x[:-2]) / (dt * dt)  # row j: read after step j + 1
+    fd = fd_all[n_settle - 1 :]
+    own = np.array([_rotate(v, -RING_RATE * dt) for v in e])  # the start of the step
+    scale = scene.scale
+
+    def rms(residual: Array) -> float:
+        return float(np.sqrt(np.mean(np.sum(residual**2, axis=1)))) / scale
+
+    unit_t = np.column_stack([-e[:, 1], e[:, 0]]) / np.hypot(e[:, 0], e[:, 1])[:, None]
+    tangential = np.sum(f * unit_t, axis=1) / np.hypot(f[:, 0], f[:, 1])
+    return RingErrors(
+        dt=dt,
+        end=rms(f - e),
+        tangential=float(-np.mean(tangential)),
+        half_turn=0.5 * RING_RATE * dt,
+        mid=rms(f - mid),
+        fd_end=rms(fd - e),
+        fd_own=rms(fd - own),
     )
-    for est in estimators:
-        for dt in CH7_DTS:
-            (r,) = measure(Point("ring", Knobs(dt=dt), est), filters=("none",), repeats=3)
-            rows.append(AccuracyRow(dt, est, r.error, r.cost_us))
-    return tuple(rows)
+
+
+CH7_REPEATS = 9
+"""Interleaved timing rounds of chapter 7's cost panel (median and range are drawn)."""
+
+CH7_BLOCK = 120
+"""Steps per timed block of chapter 7's cost panel."""
+
+
+@cache
+def ring_costs() -> dict[float, tuple[float, float, float]]:
+    """ms of computing per simulated second of the ring scene (reverse integration) at each dt:
+    (median, lowest, highest) over :data:`CH7_REPEATS` rounds, every dt timed once per round so
+    that a busy spell of the machine hits them all alike."""
+    import time
+
+    from playground.bench.scenes import Knobs, build
+
+    worlds = {dt: build("ring", Knobs(dt=dt)).world for dt in CH7_DTS}
+    for w in worlds.values():
+        w.run(0.2)  # past the first steps' one-off costs
+    samples: dict[float, list[float]] = {dt: [] for dt in CH7_DTS}
+    for _ in range(CH7_REPEATS):
+        for dt, w in worlds.items():
+            t0 = time.perf_counter()
+            for _ in range(CH7_BLOCK):
+                w.step()
+                w.forces("player")
+            per_step = (time.perf_counter() - t0) / CH7_BLOCK
+            samples[dt].append(1e3 * per_step / dt)
+    return {dt: (float(np.median(v)), min(v), max(v)) for dt, v in samples.items()}
 
 
 def ch7_substeps_30() -> float:
-    """Ring error of reverse integration at dt = 1/30 s with 4 substeps, %."""
+    """Ring error (mid-step) of reverse integration at dt = 1/30 s with 4 substeps, %."""
     from playground.bench.accuracy import Point, measure
     from playground.bench.scenes import Knobs
 
@@ -1005,28 +1155,95 @@ def ch7_substeps_30() -> float:
     return r.error * 100.0
 
 
-def _acc(est: str, dt: float) -> float:
-    return next(r.error for r in accuracy_rows() if r.estimator == est and r.dt == dt) * 100.0
+def ch7_end_30() -> float:
+    """Ring error against the end of the step at dt = 1/30 s, %."""
+    return ring_errors(1 / 30).end * 100.0
 
 
-def ch7_reverse_30() -> float:
-    """Ring error of reverse integration at dt = 1/30 s, %."""
-    return _acc("reverse", 1 / 30)
+def ch7_end_60() -> float:
+    return ring_errors(1 / 60).end * 100.0
 
 
-def ch7_reverse_240() -> float:
-    """Ring error of reverse integration at dt = 1/240 s, %."""
-    return _acc("reverse", 1 / 240)
+def ch7_end_120() -> float:
+    return ring_errors(1 / 120).end * 100.0
 
 
-def ch7_fd_120() -> float:
-    """Ring error of finite differences at dt = 1/120 s, %."""
-    return _acc("finite-difference", 1 / 120)
+def ch7_end_240() -> float:
+    return ring_errors(1 / 240).end * 100.0
 
 
-def ch7_reverse_120() -> float:
-    """Ring error of reverse integration at dt = 1/120 s, %."""
-    return _acc("reverse", 1 / 120)
+def ch7_tangential_30() -> float:
+    """Tangential part of the reading against the end of the step at dt = 1/30 s, %."""
+    return ring_errors(1 / 30).tangential * 100.0
+
+
+def ch7_tangential_60() -> float:
+    return ring_errors(1 / 60).tangential * 100.0
+
+
+def ch7_tangential_120() -> float:
+    return ring_errors(1 / 120).tangential * 100.0
+
+
+def ch7_tangential_240() -> float:
+    return ring_errors(1 / 240).tangential * 100.0
+
+
+def ch7_half_30() -> float:
+    """ω·dt/2 at dt = 1/30 s, % (of a radian)."""
+    return ring_errors(1 / 30).half_turn * 100.0
+
+
+def ch7_half_60() -> float:
+    return ring_errors(1 / 60).half_turn * 100.0
+
+
+def ch7_half_120() -> float:
+    return ring_errors(1 / 120).half_turn * 100.0
+
+
+def ch7_half_240() -> float:
+    return ring_errors(1 / 240).half_turn * 100.0
+
+
+def ch7_mid_30() -> float:
+    """Ring error against the middle of the step at dt = 1/30 s, %."""
+    return ring_errors(1 / 30).mid * 100.0
+
+
+def ch7_mid_60() -> float:
+    return ring_errors(1 / 60).mid * 100.0
+
+
+def ch7_mid_120() -> float:
+    return ring_errors(1 / 120).mid * 100.0
+
+
+def ch7_mid_240() -> float:
+    return ring_errors(1 / 240).mid * 100.0
+
+
+def ch7_tangential_short_30() -> float:
+    """How far the tangential part at dt = 1/30 s falls short of ω·dt/2, % of ω·dt/2."""
+    e = ring_errors(1 / 30)
+    return (1.0 - e.tangential / math.sin(e.half_turn)) * 100.0
+
+
+def ch7_bumps_per_second() -> float:
+    """How many segment joints of the bench's ring pass under the box per second."""
+    from playground.bench.scenes import RING_RATE
+
+    return 64 * RING_RATE / (2.0 * math.pi)
+
+
+def ch7_fd_end_120() -> float:
+    """Finite differences against the end of the step at dt = 1/120 s, %."""
+    return ring_errors(1 / 120).fd_end * 100.0
+
+
+def ch7_fd_own_120() -> float:
+    """Finite differences against their own mid-point at dt = 1/120 s, %."""
+    return ring_errors(1 / 120).fd_own * 100.0
 
 
 NUMBERS: dict[str, Callable[[], float]] = {
@@ -1070,6 +1287,10 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch4_tuned_beta,
         ch4_tuned_lag_beta0,
         ch4_tuned_lag,
+        ch4_lag_euro_fixed,
+        ch4_tuned_lag_fixed,
+        ch4_euro_seen_speed,
+        ch4_euro_cutoff_on_ramp,
         ch4_spike_euro,
         ch4_spike_median,
         ch5_k,
@@ -1083,6 +1304,9 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch5_max_frequency_zeta05,
         ch5_limit_zeta1,
         ch5_limit_zeta05,
+        ch5_explicit_limit_zeta1,
+        ch5_explicit_undamped_per_step,
+        ch5_explicit_undamped_theory,
         ch5_drive_peak,
         ch5_time_to_90,
         ch5_knockover,
@@ -1105,10 +1329,26 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch6_leap_fast_land_time,
         ch6_leap_fast_land_x,
         ch6_leap_fast_end_x,
-        ch7_reverse_30,
-        ch7_reverse_120,
-        ch7_reverse_240,
-        ch7_fd_120,
+        ch7_end_30,
+        ch7_end_60,
+        ch7_end_120,
+        ch7_end_240,
+        ch7_tangential_30,
+        ch7_tangential_60,
+        ch7_tangential_120,
+        ch7_tangential_240,
+        ch7_half_30,
+        ch7_half_60,
+        ch7_half_120,
+        ch7_half_240,
+        ch7_mid_30,
+        ch7_mid_60,
+        ch7_mid_120,
+        ch7_mid_240,
+        ch7_fd_end_120,
+        ch7_tangential_short_30,
+        ch7_bumps_per_second,
+        ch7_fd_own_120,
         ch7_substeps_30,
     )
 }
@@ -1223,15 +1463,27 @@ def fig_ch4(path: Path) -> Path:
     b.axhline(JITTER_TARGET, color="k", ls="--", lw=1, label="jitter target")
     b.set_xscale("log")
     b.set_xticks(TUNE_CUTOFFS, [f"{v:g}" for v in TUNE_CUTOFFS])
+    b.minorticks_off()  # the log axis's own minor labels would overprint the ladder's
     b.set_xlabel("min_cutoff (Hz), β = 0")
     b.set_ylabel("jitter at rest (m/s²)")
     b.set_title("step 1: lower min_cutoff until the jitter stops")
     b.legend()
-    c.plot([max(be, 1e-3) for be, _ in betas], [d for _, d in betas], "o-", color="C1")
+    c.plot(
+        [max(be, 1e-3) for be, _ in betas], [d for _, d in betas], "o-", color="C1",
+        label="measured",
+    )  # fmt: skip
+    fine = np.geomspace(TUNE_BETAS[1], TUNE_BETAS[-1], 60)
+    c.plot(
+        [1e-3, *fine],
+        [euro_ramp_lag(tuning()[1], float(be), G, DT) for be in (0.0, *fine)],
+        "k:",
+        label="fixed point L = 1/(2π(fc₀ + β·s·(1 + L/Te)))",
+    )
     c.axhline(LAG_TARGET, color="k", ls="--", lw=1, label="lag target")
     c.set_xscale("log")
     c.set_xticks([1e-3, *TUNE_BETAS[1:]], ["0", *(f"{v:g}" for v in TUNE_BETAS[1:])])
-    c.set_xlabel("β (s/m, 0 drawn at the left)")
+    c.minorticks_off()
+    c.set_xlabel("β (s²/m for a signal in m/s²; β = 0 drawn at the left)")
     c.set_ylabel("lag on a ramp (s)")
     c.set_title("step 2: raise β until the lag goes")
     c.legend()
@@ -1258,15 +1510,21 @@ def fig_ch5(path: Path) -> Path:
     a.set_title("hover spring, 5 Hz, released 5 mm low")
     a.legend(fontsize=8, ncol=2)
     wh = np.linspace(0.05, 5.2, 52)
+    steps = round(1.0 / DT)  # the growth is measured over one second
     for zeta, color in ((0.0, "C2"), (0.5, "C0"), (1.0, "C1")):
-        per_step = [spring_growth(float(x), zeta) ** (1.0 / round(1.0 / DT)) for x in wh]
-        b.plot(wh, per_step, color=color, label=f"ζ = {zeta}")
+        per_step = [spring_growth(float(x), zeta) ** (1.0 / steps) for x in wh]
+        b.plot(wh, per_step, color=color, label=f"controller's spring, ζ = {zeta}")
+    for zeta, color in ((0.0, "C2"), (1.0, "C1")):
+        naive = [spring_growth(float(x), zeta, scheme="explicit") ** (1.0 / steps) for x in wh]
+        b.plot(
+            wh, naive, ":", color=color, lw=2, label=f"naive −kx − cv (explicit Euler), ζ = {zeta}"
+        )
     b.axhline(1.0, color="k", ls="--", lw=1)
-    b.set_ylim(0.0, 1.6)
+    b.set_ylim(0.0, 1.4)
     b.set_xlabel("2πf·dt")
     b.set_ylabel("swing growth per step")
-    b.set_title("pymunk's integrator on a spring force: above 1 it gains energy")
-    b.legend(fontsize=8)
+    b.set_title("the spring in pymunk: above 1 the swing grows every step (unstable)")
+    b.legend(fontsize=7, loc="lower right", framealpha=0.9)
     for impulse, color in ((120.0, "C0"), (200.0, "C3")):
         _, r = shove(impulse, seconds=5.0)
         c.plot(r[:, 0], r[:, 1], color=color, label=f"shove {impulse:.0f} N·s")
@@ -1319,20 +1577,35 @@ def fig_ch6(path: Path) -> Path:
 
 
 def fig_ch7(path: Path) -> Path:
-    """Error and cost against dt on the bench's ring scene."""
-    rows = accuracy_rows()
-    fig, (a, b) = _axes(2)
-    for est, marker in (("reverse", "o-"), ("finite-difference", "s--")):
-        sel = [r for r in rows if r.estimator == est]
-        a.loglog([r.dt for r in sel], [100 * r.error for r in sel], marker, label=est)
-        b.loglog([r.dt for r in sel], [r.cost_us / r.dt / 1e3 for r in sel], marker, label=est)
-    a.set_ylabel("error (% of m·v²/r)")
-    a.set_title("ring scene: error against the exact answer, unfiltered")
-    a.legend()
+    """The ring's error against dt with each convention, and the cost with its spread."""
+    errs = [ring_errors(dt) for dt in CH7_DTS]
+    dts = [e.dt for e in errs]
+    fig, (a, b) = _axes(2, height=3.2)
+    a.loglog(dts, [100 * e.end for e in errs], "o-", label="against the end of the step")
+    a.loglog(dts, [100 * e.tangential for e in errs], "s:", label="  its tangential part")
+    a.loglog(dts, [100 * e.half_turn for e in errs], "k--", lw=1, label="ω·dt/2")
+    a.loglog(dts, [100 * e.mid for e in errs], "o-", label="against the middle of the step")
+    a.loglog(
+        dts, [100 * e.fd_own for e in errs], "x", ms=10, color="C3",
+        label="finite differences, against their own mid-point",
+    )  # fmt: skip
+    a.set_ylabel("error (% of m·ω²·r)")
+    a.set_title("ring scene, reverse integration, unfiltered: the same readings, two clocks")
+    a.legend(fontsize=8)
+    costs = ring_costs()
+    med = np.array([costs[dt][0] for dt in dts])
+    lo = np.array([costs[dt][1] for dt in dts])
+    hi = np.array([costs[dt][2] for dt in dts])
+    b.errorbar(dts, med, yerr=[med - lo, hi - med], fmt="o-", capsize=4, label="median, range")
+    b.set_xscale("log")
+    b.set_yscale("log")
     b.set_xlabel("dt (s)")
     b.set_ylabel("ms per simulated second")
-    b.set_title("cost per simulated second on the machine that drew this (noisy)")
-    b.legend()
+    b.set_title(f"cost on the machine that drew this ({CH7_REPEATS} interleaved rounds)")
+    b.legend(fontsize=8)
+    for ax in (a, b):
+        ax.set_xticks(dts, [f"1/{round(1 / dt)}" for dt in dts])
+        ax.minorticks_off()
     return _save(fig, path)
 
 
@@ -1348,7 +1621,22 @@ FIGURES: dict[str, Callable[[Path], Path]] = {
 """Every chapter figure, by file name."""
 
 
-def make_all(out: Path) -> list[Path]:
-    """Draw every figure into directory ``out`` (created if needed); the paths written."""
+def make_all(out: Path, progress: bool = False) -> list[Path]:
+    """Draw every figure into directory ``out`` (created if needed); the paths written.
+
+    With ``progress`` a bar on stderr names the figure being drawn (the simulations behind some
+    take tens of seconds); it needs tqdm, in the same ``bench`` extra as matplotlib.
+    """
     out.mkdir(parents=True, exist_ok=True)
-    return [draw(out / name) for name, draw in FIGURES.items()]
+    items = list(FIGURES.items())
+    if not progress:
+        return [draw(out / name) for name, draw in items]
+    import importlib
+
+    tqdm = importlib.import_module("tqdm").tqdm  # untyped; the bench extra installs it
+    written = []
+    with tqdm(items, unit="figure", desc="figures") as bar:
+        for name, draw in bar:
+            bar.set_postfix_str(name)
+            written.append(draw(out / name))
+    return written

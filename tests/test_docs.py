@@ -41,6 +41,24 @@ TOL_LEAP_SHIFT = 1e-9
 """m: the leap's flight never touches the creature, so the landing spot moves by exactly the
 creature's extra travel; only the rounding of positions of order 10 m differs."""
 
+TOL_FIXED_POINT = 0.01
+"""Relative: the 1€ filter's simulated ramp lag against the fixed point L = 1/(2π(min_cutoff +
+β·s·(1 + L/Te))) (the issue's 1 %; the fixed point is the steady state, and after the ramp's one
+second the derivative smoother at 1 Hz has settled to e^(−2π) ≈ 0.2 % of its start)."""
+
+TOL_HALF_STEP = 0.01
+"""Relative: the ring's tangential error against the end of the step, against ω·dt/2 (the
+issue's 1 %; from dt = 1/60 s the engine's own tangential error is below it)."""
+
+TOL_ESTIMATORS_AT_MID = 0.1
+"""Relative: finite differences at their own mid-point against reverse integration at its own,
+on the ring (measured 4 % apart at 1/30 s, 6.5 % at 1/60 s: pymunk corrects overlaps by moving
+positions with a bias velocity that the velocities never show, so positions carry a little
+extra)."""
+
+MID_STEP_BOUND = 0.01
+"""The chapter's claim: against mid-step the ring's error is under 1 % at every swept dt."""
+
 TOL_CARRIED = 0.01
 """m/s: speed relative to the creature that still counts as carried (gravity_leap's own check)."""
 
@@ -99,12 +117,19 @@ def test_every_chapter_shows_a_figure_the_code_makes() -> None:
             assert name in figures.FIGURES, f"{path.name}: {name} is not made by the code"
 
 
-def test_one_command_regenerates_every_figure(tmp_path: Path) -> None:
-    """``playground figures --out DIR`` writes one PNG per figure, headless."""
+def test_one_command_regenerates_every_figure(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``playground figures --out DIR`` writes one PNG per figure, headless, and shows its
+    progress on stderr (figure by figure, to the last)."""
     assert main(["figures", "--out", str(tmp_path)]) == 0
     for name in figures.FIGURES:
         data = (tmp_path / name).read_bytes()
         assert data[:8] == b"\x89PNG\r\n\x1a\n", name
+    err = capsys.readouterr().err
+    total = len(figures.FIGURES)
+    assert f"{total}/{total}" in err, err[-300:]
+    assert list(figures.FIGURES)[-1] in err
 
 
 def test_exercise_1_drift_is_a_tau_t() -> None:
@@ -186,3 +211,47 @@ def test_exercise_6_a_faster_creature_is_landed_on_as_soon_and_further_back() ->
     assert end[1] == 1.0, "the player should end standing on the faster creature"
     assert abs(end[2]) < figures.leap_half_width()
     assert end[4] < TOL_CARRIED
+
+
+def test_euro_lag_is_the_fixed_point() -> None:
+    """Chapter 4: the 1€ filter's lag on a ramp solves L = 1/(2π(min_cutoff + β·s·(1 + L/Te))),
+    the derivative being taken against the previous filtered value (perception's filter and the
+    tuned one)."""
+    for measured, fixed in (
+        (figures.ch4_lag_euro(), figures.ch4_lag_euro_fixed()),
+        (figures.ch4_tuned_lag(), figures.ch4_tuned_lag_fixed()),
+    ):
+        assert abs(measured - fixed) < TOL_FIXED_POINT * fixed, (measured, fixed)
+    beta_zero = figures.euro_ramp_lag(2.0, 0.0, figures.G, figures.DT)
+    assert math.isclose(beta_zero, 1.0 / (2.0 * math.pi * 2.0), rel_tol=1e-9)
+
+
+TOL_GROWTH = 0.01
+"""Relative, on a growth per step: the peak-to-peak measurement samples peaks at whole steps, a
+fraction of a step off the true crest (measured 0.08 % apart at 5 Hz, 1/120 s)."""
+
+
+def test_naive_spring_is_explicit_euler() -> None:
+    """Chapter 5: the naive spring −kx − cv is explicit Euler: stable only while 2πf·dt < 2ζ, and
+    undamped it grows by √(1 + (2πf·dt)²) every step."""
+    assert abs(figures.ch5_explicit_limit_zeta1() - 2.0) < TOL_LIMIT
+    growth = figures.ch5_explicit_undamped_per_step()
+    theory = figures.ch5_explicit_undamped_theory()
+    assert abs(growth - theory) < TOL_GROWTH * theory
+    assert theory > 1.0
+
+
+def test_ring_tangential_error_is_half_a_step_of_turn() -> None:
+    """Chapter 7: against the end of the step, the ring's reading points back by ω·dt/2 (within
+    1 % from dt = 1/60 s; at 1/30 s by less than the mid-step error), and against the middle of
+    the step its error is under 1 % at every dt; finite differences against their own mid-point
+    are as accurate as reverse integration against its own."""
+    for dt in figures.CH7_DTS:
+        e = figures.ring_errors(dt)
+        half = math.sin(e.half_turn)
+        assert abs(e.tangential - half) < e.mid, (dt, e)
+        if dt <= 1 / 60:
+            assert abs(e.tangential - half) < TOL_HALF_STEP * half, (dt, e)
+        assert e.mid < MID_STEP_BOUND, (dt, e)
+        assert e.end > e.mid
+        assert abs(e.fd_own - e.mid) < TOL_ESTIMATORS_AT_MID * e.mid, (dt, e)

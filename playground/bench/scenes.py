@@ -1,8 +1,13 @@
 """Scenes with exact answers (docs/design.md §5), built on :class:`~playground.world.World`.
 
 Each builder takes the solver knobs and returns a :class:`Scene`: the world, the bodies whose
-support forces (N) are summed into one measured vector, and the exact value of that sum at any
-moment. The accuracy sweep measures every force estimator against these answers.
+support forces (N) are summed into one measured vector, and the exact value of that sum for the
+step just taken. The accuracy sweep measures every force estimator against these answers.
+
+One convention for every scene: a reading is the mean force over a step (an impulse divided by
+dt), so it is compared with the exact force at the *middle* of that step, which is the exact mean
+over the step to second order. Compared with the end of the step instead, a force that turns at ω
+shows a tangential error of exactly ω·dt/2: a time offset of half a step, not an inaccuracy.
 
 >>> scene = build("rest", Knobs(dt=1 / 60))
 >>> scene.world.run(1.0)
@@ -68,7 +73,7 @@ class Scene:
         name: the scene's key in :data:`SCENES`.
         world: the world, at t = 0, measured bodies tracked (perceive off).
         bodies: the measured bodies; their support forces are summed, N.
-        exact: the exact summed support force for the step just taken, N.
+        exact: the exact summed support force at the middle of the step just taken, N.
         scale: force the relative error is divided by, N.
         settle: seconds run before measuring.
         measure: seconds measured.
@@ -190,7 +195,8 @@ RING_RATE = 1.5
 def ring(knobs: Knobs) -> Scene:
     """A box carried round the inside of a ring spinning in zero gravity: N = m·v²/r inward.
 
-    The box starts moving with the floor, so the exact force is −m·ω²·r at its centre of mass r.
+    The box starts moving with the floor, so the exact force is −m·ω²·r at its centre of mass r,
+    taken at mid-step: the end-of-step position turned back by ω·dt/2.
     """
     world = World(knobs.config(), gravity=(0.0, 0.0))
     body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
@@ -206,7 +212,9 @@ def ring(knobs: Knobs) -> Scene:
     def exact(w: World) -> Vec:
         p = w.body("player").position
         k = -PLAYER_MASS * RING_RATE**2
-        return (k * p.x, k * p.y)
+        half = -0.5 * RING_RATE * w.config.dt  # rad: back to the middle of the step
+        c, s = math.cos(half), math.sin(half)
+        return (k * (c * p.x - s * p.y), k * (s * p.x + c * p.y))
 
     return Scene("ring", world, ("player",), exact, PLAYER_MASS * RING_RATE**2 * r0, 0.5, 1.5)
 
@@ -308,7 +316,7 @@ def hover(knobs: Knobs) -> Scene:
     weight = PLAYER_MASS * STANDARD_GRAVITY
 
     def exact(w: World) -> Vec:
-        x, v = hover_exact(w.time - w.config.dt)
+        x, v = hover_exact(w.time - 0.5 * w.config.dt)  # mid-step, as every scene
         return (0.0, weight - k * x - c * v)
 
     return Scene("hover", world, ("player",), exact, k * abs(HOVER_START), 0.0, 2.0)
