@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from playground.filters import FilterChain, Median3, OneEuroFilter
-from playground.level import Expectation, Level
+from playground.level import CONTROLLER_QUANTITIES, Expectation, Level, Reading
 from playground.scene import Scene
 from playground.world import Stage, World
 
@@ -44,6 +44,10 @@ UNITS = {
     "contact_friction": "N",
     "support": "N",
     "perceived_gravity": "m/s²",
+    "hover": "N",
+    "drive": "N",
+    "grip": "N",
+    "push": "N",
 }
 """The unit of each quantity, for messages."""
 
@@ -75,6 +79,9 @@ def read(scene: Scene, body: str, quantity: str) -> Value:
         return float(b.angular_velocity)
     if quantity == "perceived_gravity":
         return world.perceived_gravity(body)
+    if quantity in CONTROLLER_QUANTITIES:
+        mine: tuple[float, float] = getattr(scene.controllers[body].last_forces, quantity)
+        return mine
     forces = world.forces(body)
     vec: tuple[float, float] = getattr(forces, quantity)
     return vec
@@ -89,6 +96,12 @@ def name_of(exp: Expectation) -> str:
         what += "_filtered"
     if exp.relative_to is not None:
         what += f"-{exp.relative_to}.{exp.quantity}"
+    if exp.minus is not None:
+        what += f"-{_reading_name(exp.minus)}"
+    if exp.angle_to is not None:
+        ref = exp.angle_to
+        to = _reading_name(ref) if isinstance(ref, Reading) else f"[{ref[0]:g}, {ref[1]:g}]"
+        what = f"angle of {what} to {to}"
     if exp.change:
         what = f"change of {what}"
     if exp.component is not None:
@@ -98,6 +111,11 @@ def name_of(exp: Expectation) -> str:
     if exp.window is None:
         return f"{what} {exp.check}"
     return f"{what} {exp.check} in [{exp.window[0]:g}, {exp.window[1]:g}] s"
+
+
+def _reading_name(r: Reading) -> str:
+    scale = "" if r.scale == 1.0 else f"{r.scale:g}·"
+    return f"{scale}{r.body}.{r.quantity}"
 
 
 def _fmt(value: Value, unit: str) -> str:
@@ -117,13 +135,24 @@ def _minus(a: Value, b: Value) -> Value:
     raise ValueError(f"cannot subtract {b!r} from {a!r}")
 
 
+def _angle(a: tuple[float, float], b: tuple[float, float]) -> float:
+    """The angle between two vectors, rad in [0, π]; NaN if either has no direction.
+
+    >>> round(_angle((1.0, 0.0), (1.0, 1.0)), 6)
+    0.785398
+    """
+    if a == (0.0, 0.0) or b == (0.0, 0.0):
+        return math.nan
+    return abs(math.atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]))
+
+
 class Check:
     """One expectation, fed a sample every step by :meth:`observe`."""
 
     def __init__(self, exp: Expectation, scene: Scene) -> None:
         self.exp = exp
         self.name = name_of(exp)
-        self.unit = UNITS[exp.quantity]
+        self.unit = "rad" if exp.angle_to is not None else UNITS[exp.quantity]
         self.dt = scene.level.settings.dt
         self._window = exp.window or (0.0, scene.level.settings.seconds)
         self._filter: FilterChain | OneEuroFilter | None = None
@@ -155,11 +184,34 @@ class Check:
             if exp.relative_to not in scene.world.names:
                 return None
             raw = _minus(raw, read(scene, exp.relative_to, exp.quantity))
+        if exp.minus is not None:
+            other = self._reading(scene, exp.minus)
+            if other is None:
+                return None
+            raw = _minus(raw, other)
         if self._filter is not None:
             assert isinstance(raw, tuple)
             out = self._filter.filter(np.array(raw, dtype=np.float64), self.dt)
             raw = (float(out[0]), float(out[1]))
+        if exp.angle_to is not None:
+            ref = exp.angle_to
+            to = self._reading(scene, ref) if isinstance(ref, Reading) else ref
+            if to is None:
+                return None
+            assert isinstance(raw, tuple) and isinstance(to, tuple)
+            raw = _angle(raw, to)
         return raw
+
+    @staticmethod
+    def _reading(scene: Scene, r: Reading) -> Value | None:
+        """``r.scale`` × another body's reading now, or None if the body is absent."""
+        if r.body not in scene.world.names:
+            return None
+        v = read(scene, r.body, r.quantity)
+        if isinstance(v, tuple):
+            return (r.scale * v[0], r.scale * v[1])
+        assert isinstance(v, float)
+        return r.scale * v
 
     def _project(self, raw: Value) -> Value:
         """Apply ``change`` (minus the window's first value) and ``component``."""

@@ -559,6 +559,10 @@ VECTOR_QUANTITIES = (
     "constraint",
     "support",
     "perceived_gravity",
+    "hover",
+    "drive",
+    "grip",
+    "push",
 )
 """Quantities that are (x, y) vectors; pick a ``component`` or compare the vector."""
 SCALAR_QUANTITIES = ("angle", "angular_velocity", "tilt")
@@ -571,7 +575,10 @@ FORCE_QUANTITIES = (
     "constraint",
     "support",
 )
-"""Force readings, N; ``filtered = true`` gives the 1€-filtered reading."""
+"""Force readings of the solver, N; ``filtered = true`` gives the 1€-filtered reading."""
+CONTROLLER_QUANTITIES = ("hover", "drive", "grip", "push")
+"""An actor's own readings of the forces its controller put on it in the last step, N (the
+grip: the joint's force the step before)."""
 
 Quantity = Literal[
     "position",
@@ -587,7 +594,19 @@ Quantity = Literal[
     "constraint",
     "support",
     "perceived_gravity",
+    "hover",
+    "drive",
+    "grip",
+    "push",
 ]
+
+
+class Reading(_Model):
+    """Another reading taken the same step: ``scale`` × ``body``'s ``quantity``."""
+
+    body: Name
+    quantity: Quantity
+    scale: Finite = Field(default=1.0, description="Multiplies the reading (−1 flips it).")
 
 
 class Expectation(_Model):
@@ -596,6 +615,10 @@ class Expectation(_Model):
     ``check``: ``at`` time ``t``; ``always`` / ``eventually`` / ``mean`` over ``window`` (default
     the whole run). Compare with ``equals`` (± ``tolerance`` + ``relative``·|equals|), or bound
     with ``above`` / ``below``; a state compares with ``equals`` or ``one_of``.
+
+    The value compared is the quantity, minus the same quantity of ``relative_to``, minus the
+    reading ``minus`` (another body's force, say), filtered if asked; then, with ``angle_to``,
+    the angle between that vector and a fixed vector or another reading (its direction, rad).
     """
 
     name: str | None = Field(
@@ -625,6 +648,15 @@ class Expectation(_Model):
     )
     change: bool = Field(
         default=False, description="Compare the change since the window's first step."
+    )
+    minus: Reading | None = Field(
+        default=None,
+        description="Subtract another reading (of any body, of the same kind) taken the same step.",
+    )
+    angle_to: Vec | Reading | None = Field(
+        default=None,
+        description="Check the angle (rad, 0..π) between the vector and this fixed vector or "
+        "reading instead of the vector itself.",
     )
 
     @field_validator("window")
@@ -661,6 +693,10 @@ class Level(_Model):
     events: list[Event] = Field(default_factory=list)
     inputs: list[Input] = Field(default_factory=list)
     expect: list[Expectation] = Field(default_factory=list)
+    catches: list[Name] = Field(
+        default_factory=list,
+        description="Breaks (playground faults) its checks must catch, by name.",
+    )
 
     def body_names(self) -> list[str]:
         """Every named body: props, movers, actors and spawned props."""
@@ -881,6 +917,28 @@ def _references(level: Level) -> Iterator[Problem]:
         yield from known("view.follow", follow, names, "body")
     for i, exp in enumerate(level.expect):
         yield from _check_expectation(f"expect.{i}", exp, level, names, actors, tracked)
+    yield from _check_catches(level)
+
+
+def _check_catches(level: Level) -> Iterator[Problem]:
+    """Every declared break exists, once; and there are checks to catch it."""
+    if not level.catches:
+        return
+    from playground.faults import names as break_names
+
+    valid = break_names()
+    seen: set[str] = set()
+    for i, name in enumerate(level.catches):
+        if name not in valid:
+            yield Problem(
+                f"catches.{i}",
+                f"no break named {name!r}{_suggest(name, valid)} (valid: {', '.join(valid)})",
+            )
+        elif name in seen:
+            yield Problem(f"catches.{i}", f"break {name!r} is declared twice")
+        seen.add(name)
+    if not level.expect:
+        yield Problem("catches", "a level without expectations cannot catch a break")
 
 
 def _check_expectation(
@@ -939,29 +997,90 @@ def _check_expectation(
         yield Problem(path, "nothing to compare: give equals, above or below")
     if exp.equals is not None and (exp.above is not None or exp.below is not None):
         yield Problem(path, "give equals (± tolerance) or above/below bounds, not both")
-    vector = q in VECTOR_QUANTITIES and exp.component is None
     if q in SCALAR_QUANTITIES and exp.component is not None:
         yield Problem(f"{path}.component", f"{q} is a number; it has no component")
+    yield from _readable(path, exp.body, q, level, actors, tracked, filtered=exp.filtered)
+    if exp.filtered and q not in FORCE_QUANTITIES:
+        yield Problem(f"{path}.filtered", f"only force readings are filtered, not {q}")
+    if exp.minus is not None:
+        yield from _check_reading(f"{path}.minus", exp.minus, level, names, actors, tracked)
+        if (exp.minus.quantity in VECTOR_QUANTITIES) != (q in VECTOR_QUANTITIES):
+            yield Problem(
+                f"{path}.minus.quantity",
+                f"{exp.minus.quantity} and {q} are not both vectors or both numbers",
+            )
+    angle = exp.angle_to is not None
+    if isinstance(exp.angle_to, Reading):
+        ref = exp.angle_to
+        yield from _check_reading(f"{path}.angle_to", ref, level, names, actors, tracked)
+        if ref.quantity not in VECTOR_QUANTITIES:
+            yield Problem(f"{path}.angle_to.quantity", f"{ref.quantity} is not a vector")
+        if ref.scale == 0.0:
+            yield Problem(f"{path}.angle_to.scale", "a zero vector has no direction")
+    elif isinstance(exp.angle_to, tuple) and exp.angle_to == (0.0, 0.0):
+        yield Problem(f"{path}.angle_to", "a zero vector has no direction")
+    if angle:
+        if q not in VECTOR_QUANTITIES:
+            yield Problem(f"{path}.angle_to", f"{q} is a number: it has no direction")
+        if exp.component is not None:
+            yield Problem(f"{path}.component", "angle_to compares directions: no component")
+        if exp.change:
+            yield Problem(f"{path}.change", "angle_to compares directions, not changes")
+    vector = q in VECTOR_QUANTITIES and exp.component is None and not angle
     if vector and (exp.above is not None or exp.below is not None):
         yield Problem(f"{path}.component", "bounds need a component: x, y or norm")
     if vector and isinstance(exp.equals, float | int):
         yield Problem(f"{path}.equals", f"{q} is a vector: give [x, y] or a component")
     if not vector and isinstance(exp.equals, tuple):
-        yield Problem(f"{path}.equals", "expected a number for a component or scalar")
-    if q in (*FORCE_QUANTITIES, "perceived_gravity") and exp.body not in tracked:
-        yield Problem(f"{path}.body", f"{exp.body!r} is not tracked; add it to tracking.bodies")
+        yield Problem(f"{path}.equals", "expected a number for a component, angle or scalar")
+
+
+def _check_reading(
+    path: str,
+    reading: Reading,
+    level: Level,
+    names: Sequence[str],
+    actors: Sequence[str],
+    tracked: Sequence[str],
+) -> Iterator[Problem]:
+    """Another reading an expectation refers to (``minus``, ``angle_to``)."""
+    if reading.body not in names:
+        yield Problem(
+            f"{path}.body",
+            f"no body named {reading.body!r}{_suggest(reading.body, list(names))}",
+        )
+        return
+    if reading.quantity == "state":
+        yield Problem(f"{path}.quantity", "a state is not a number or vector")
+        return
+    yield from _readable(path, reading.body, reading.quantity, level, actors, tracked)
+
+
+def _readable(
+    path: str,
+    body: str,
+    q: str,
+    level: Level,
+    actors: Sequence[str],
+    tracked: Sequence[str],
+    *,
+    filtered: bool = False,
+) -> Iterator[Problem]:
+    """What a body needs for its quantity ``q`` to be read."""
+    if q in (*FORCE_QUANTITIES, "perceived_gravity") and body not in tracked:
+        yield Problem(f"{path}.body", f"{body!r} is not tracked; add it to tracking.bodies")
+    if q in CONTROLLER_QUANTITIES and body not in actors:
+        yield Problem(f"{path}.quantity", f"{body!r} is not an actor: it has no {q} reading")
     if (
         q in ("contact", "contact_normal", "contact_friction", "constraint")
         and not level.settings.contact_split
     ):
         yield Problem(f"{path}.quantity", f"{q} needs settings.contact_split = true")
-    perceived = q == "perceived_gravity" or (q == "support" and exp.filtered)
-    if perceived and exp.body not in actors and not level.tracking.perceive:
+    perceived = q == "perceived_gravity" or (q == "support" and filtered)
+    if perceived and body not in actors and not level.tracking.perceive:
         yield Problem(f"{path}.quantity", "needs tracking.perceive = true")
-    if exp.filtered and q not in FORCE_QUANTITIES:
-        yield Problem(f"{path}.filtered", f"only force readings are filtered, not {q}")
-    if q == "tilt" and exp.body not in tracked:
-        yield Problem(f"{path}.body", f"tilt needs an up: {exp.body!r} must be an actor or tracked")
+    if q == "tilt" and body not in tracked:
+        yield Problem(f"{path}.body", f"tilt needs an up: {body!r} must be an actor or tracked")
 
 
 # -- loading -------------------------------------------------------------------------------------
