@@ -34,6 +34,7 @@ from typing import Any
 
 from playground import __version__
 from playground.bench import cli as bench_cli
+from playground.guard import RunawayError
 from playground.level import LevelError, find, load, schema, shipped
 
 __all__ = ["main", "parser"]
@@ -100,15 +101,20 @@ def cmd_run(args: argparse.Namespace) -> int:
         seconds = covered if args.seconds is None else seconds
     checks = watch(scene)
     start = time.perf_counter()
-    if args.record is not None:
-        try:
-            with recording(scene, args.record):
-                scene.run(seconds)
-        except ValueError as exc:
-            print(f"playground run: {exc}", file=sys.stderr)
-            return 2
-    else:
-        scene.run(seconds)
+    try:
+        if args.record is not None:
+            try:
+                with recording(scene, args.record):
+                    scene.run(seconds)
+            except ValueError as exc:
+                print(f"playground run: {exc}", file=sys.stderr)
+                return 2
+        else:
+            scene.run(seconds)
+    except RunawayError as exc:
+        # The recording (closed on the way out) keeps every step before this one.
+        print(f"playground run: {path.stem}: {exc}", file=sys.stderr)
+        return 1
     wall = time.perf_counter() - start
     results = checks.results()
     world = scene.world

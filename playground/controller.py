@@ -384,7 +384,11 @@ class Controller:
         assert self.source is not None
         if self.removed:
             return
-        self.intent = self.source.intent(world.time)
+        intent = self.source.intent(world.time)
+        if not isinstance(intent, Intent):
+            # A duck-typed intent skips Intent's checks: a NaN move would win the whole budget.
+            raise ValueError(f"{self.name}: the intent source returned {intent!r}, not an Intent")
+        self.intent = intent
 
     def _control(self, world: World) -> None:
         if self.removed:

@@ -20,7 +20,16 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 from numpy.typing import NDArray
 
-from playground._validate import finite, finite_vec, positive
+from playground._validate import bounded, bounded_vec, finite, in_range, unit
+from playground.limits import (
+    MAX_ANGLE,
+    MAX_ANGULAR_SPEED,
+    MAX_COORDINATE,
+    MAX_GRAVITY,
+    MAX_GRAVITY_SCALE,
+    MAX_LENGTH,
+    MAX_TIME,
+)
 
 __all__ = [
     "STANDARD_GRAVITY",
@@ -68,7 +77,7 @@ class Uniform:
     g: Vec = (0.0, -STANDARD_GRAVITY)
 
     def __post_init__(self) -> None:
-        finite_vec("g", self.g)
+        bounded_vec("g", self.g, MAX_GRAVITY, "m/s²")
 
     @property
     def uniform(self) -> bool:
@@ -92,10 +101,9 @@ class Turn:
     duration: float = 0.0
 
     def __post_init__(self) -> None:
-        finite("start", self.start)
-        finite("angle", self.angle)
-        if not (math.isfinite(self.duration) and self.duration >= 0.0):
-            raise ValueError(f"duration: expected a finite number >= 0 s, got {self.duration!r}")
+        finite("start", self.start)  # a turn after the run never happens: any time will do
+        bounded("angle", self.angle, MAX_ANGLE, "rad")
+        in_range("duration", self.duration, 0.0, MAX_TIME, "s")
 
     def progress(self, t: float) -> float:
         """Fraction of the turn done at time ``t`` (0 … 1), eased with a smoothstep.
@@ -135,9 +143,9 @@ class RotatingRoom:
     turns: tuple[Turn, ...] = ()
 
     def __post_init__(self) -> None:
-        finite("magnitude", self.magnitude)
-        finite("angle", self.angle)
-        finite("rate", self.rate)
+        bounded("magnitude", self.magnitude, MAX_GRAVITY, "m/s²")
+        bounded("angle", self.angle, MAX_ANGLE, "rad")
+        bounded("rate", self.rate, MAX_ANGULAR_SPEED, "rad/s")
 
     @property
     def uniform(self) -> bool:
@@ -182,11 +190,12 @@ class Radial:
     softening: float = 0.5
 
     def __post_init__(self) -> None:
-        finite_vec("center", self.center)
-        finite("surface_gravity", self.surface_gravity)
-        positive("radius", self.radius)
-        if not (math.isfinite(self.softening) and self.softening >= 0.0):
-            raise ValueError(f"softening: expected a finite number >= 0 m, got {self.softening!r}")
+        bounded_vec("center", self.center, MAX_COORDINATE, "m")
+        bounded("surface_gravity", self.surface_gravity, MAX_GRAVITY, "m/s²")
+        in_range("radius", self.radius, 0.0, MAX_COORDINATE, "m")
+        if self.radius == 0.0:
+            raise ValueError("radius: expected a number > 0 m, got 0.0")
+        in_range("softening", self.softening, 0.0, MAX_LENGTH, "m")
 
     @property
     def uniform(self) -> bool:
@@ -211,7 +220,9 @@ class Zone:
 
     def __post_init__(self) -> None:
         x0, y0, x1, y1 = self.box
-        if not all(math.isfinite(v) for v in self.box) or x1 <= x0 or y1 <= y0:
+        for i, v in enumerate(self.box):
+            bounded(f"box[{i}]", v, MAX_COORDINATE, "m")
+        if x1 <= x0 or y1 <= y0:
             raise ValueError(
                 f"box: expected finite (x0, y0, x1, y1) with x1 > x0 and y1 > y0, got {self.box!r}"
             )
@@ -265,13 +276,9 @@ class GravityRule:
     direction: Vec | None = None
 
     def __post_init__(self) -> None:
-        finite("scale", self.scale)
+        bounded("scale", self.scale, MAX_GRAVITY_SCALE, "× the field")
         if self.direction is not None:
-            finite_vec("direction", self.direction)
-            n = math.hypot(*self.direction)
-            if n == 0.0:
-                raise ValueError("direction: expected a non-zero vector, got (0, 0)")
-            object.__setattr__(self, "direction", (self.direction[0] / n, self.direction[1] / n))
+            object.__setattr__(self, "direction", unit("direction", self.direction))
 
     @property
     def is_default(self) -> bool:

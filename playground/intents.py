@@ -11,12 +11,11 @@ at time ``t``; the controller turns that into forces within its budgets.
 
 from __future__ import annotations
 
-import math
 from bisect import bisect_right
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-from playground._validate import finite, finite_vec, positive
+from playground._validate import finite, positive, unit
 
 __all__ = ["Idle", "Intent", "IntentSource", "Patrol", "Script"]
 
@@ -63,11 +62,7 @@ class Intent:
         _unit_range("move", self.move)
         _unit_range("climb", self.climb)
         if self.gravity is not None:
-            finite_vec("gravity", self.gravity)
-            n = math.hypot(*self.gravity)
-            if n == 0.0:
-                raise ValueError("gravity: expected a non-zero direction, got (0, 0)")
-            object.__setattr__(self, "gravity", (self.gravity[0] / n, self.gravity[1] / n))
+            object.__setattr__(self, "gravity", unit("gravity", self.gravity))
         if self.nullify is not None and not isinstance(self.nullify, str):
             raise ValueError(f"nullify: expected a body name or None, got {self.nullify!r}")
 

@@ -27,9 +27,35 @@ import pymunk.batch as batch
 from numpy.typing import NDArray
 
 from playground._batch import BodyRows, lookup, read_positions
-from playground._validate import finite, finite_vec, positive
+from playground._validate import bounded, bounded_vec, finite, in_range
 from playground.forces import BodyForces, Category, ForceLedger, ForceSolver
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
+from playground.guard import (
+    FORCE_BOUNDS,
+    FORCE_COLUMNS,
+    GUARD_EVERY,
+    STATE_BOUNDS,
+    STATE_COLUMNS,
+    RunawayError,
+    first_bad,
+)
+from playground.limits import (
+    MAX_ANGLE,
+    MAX_ANGULAR_SPEED,
+    MAX_COORDINATE,
+    MAX_DT,
+    MAX_FORCE,
+    MAX_GRAVITY,
+    MAX_IMPULSE,
+    MAX_LENGTH,
+    MAX_MASS,
+    MAX_MOMENT,
+    MAX_SPEED,
+    MIN_DT,
+    MIN_MASS,
+    MIN_MOMENT,
+    RUNAWAY_FORCE,
+)
 from playground.movers import Mover, Path
 from playground.perception import PerceivedGravity, Perception
 
@@ -37,6 +63,12 @@ __all__ = ["Stage", "StageTiming", "World", "WorldConfig"]
 
 Vec = tuple[float, float]
 Hook = Callable[["World"], None]
+
+_NEVER = 2**62
+"""A step number no run reaches: the guard's next check when the guard is off."""
+_F = batch.BodyFields
+_STATE = _F.BODY_ID | _F.POSITION | _F.ANGLE | _F.VELOCITY | _F.ANGULAR_VELOCITY
+"""The guard's read: x, y, angle, vx, vy, w per body (batch packs fields in this order)."""
 
 
 class Stage(Enum):
@@ -58,7 +90,7 @@ class WorldConfig:
     """Simulation settings, frozen.
 
     Attributes:
-        dt: the fixed step, s.
+        dt: the fixed step, s, within [``MIN_DT``, ``MAX_DT``] of :mod:`playground.limits`.
         substeps: ``space.step`` calls per step (each of dt/substeps); forces are re-applied
             before each because pymunk clears them.
         iterations: the contact/joint solver's iterations per substep.
@@ -72,6 +104,9 @@ class WorldConfig:
         contact_split: also split engine forces into contacts and constraints (costs a batch
             read of every arbiter per substep).
         timing: time each stage (off by default: ``perf_counter`` calls cost ~1 µs a stage).
+        guard: stop with :class:`~playground.guard.RunawayError` when a body goes non-finite or
+            runs away (see :mod:`playground.guard`). Off only to watch a blow-up on purpose; then
+            :meth:`World.apply_force` takes any finite force.
         perception: how perceived gravity is filtered.
     """
 
@@ -83,10 +118,11 @@ class WorldConfig:
     sleep_time: float = math.inf
     contact_split: bool = False
     timing: bool = False
+    guard: bool = True
     perception: Perception = field(default_factory=Perception)
 
     def __post_init__(self) -> None:
-        positive("dt", self.dt)
+        in_range("dt", self.dt, MIN_DT, MAX_DT, "s")
         for name in ("substeps", "iterations"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or value < 1:
@@ -180,6 +216,8 @@ class World:
             | None
         ) = None
         self._field: GravityField = Uniform()
+        self._guard_next = GUARD_EVERY if self._config.guard else _NEVER
+        self._state_buffer = batch.Buffer()
         self.gravity = gravity if gravity is not None else Uniform()
 
     # -- configuration ---------------------------------------------------------------------------
@@ -201,6 +239,7 @@ class World:
         self.space.sleep_time_threshold = config.sleep_time
         self.solver.contact_split = config.contact_split
         self.solver.check_sleep = math.isfinite(config.sleep_time)
+        self._guard_next = self.steps + GUARD_EVERY if config.guard else _NEVER
         self._plan_dirty = True
 
     def _plan(self) -> None:
@@ -231,7 +270,7 @@ class World:
     @gravity.setter
     def gravity(self, value: GravityField | Sequence[float]) -> None:
         if not isinstance(value, GravityField):
-            finite_vec("gravity", tuple(value))
+            bounded_vec("gravity", tuple(value), MAX_GRAVITY, "m/s²")
             value = Uniform((float(value[0]), float(value[1])))
         self._field = value
         self.space.gravity = self._space_gravity(self.time)
@@ -280,13 +319,17 @@ class World:
     # -- bodies ----------------------------------------------------------------------------------
 
     def add(self, name: str, body: pymunk.Body, *shapes: pymunk.Shape) -> pymunk.Body:
-        """Add a named body and its shapes. Names are unique."""
+        """Add a named body and its shapes. Names are unique.
+
+        Its mass, state and shapes must lie in the ranges of :mod:`playground.limits`
+        (``ValueError`` naming the attribute otherwise): pymunk aborts the process on some
+        absurd values and carries NaN through every later step on others.
+        """
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"name: expected a non-empty string, got {name!r}")
         if name in self._bodies:
             raise ValueError(f"{name}: a body with this name already exists")
-        if body.body_type == pymunk.Body.DYNAMIC and not (
-            body.mass > 0 and math.isfinite(body.mass)
-        ):
-            raise ValueError(f"{name}: mass must be a finite number > 0 kg, got {body.mass!r}")
+        _check_body(name, body, shapes)
         self.space.add(body, *shapes)
         self._bodies[name] = body
         self._names[body.id] = name
@@ -322,15 +365,52 @@ class World:
         return list(self._bodies)
 
     def set_mass(self, name: str, mass: float, moment: float | None = None) -> None:
-        """Change a body's mass (kg) and optionally moment (kg·m²); the solver follows."""
-        positive("mass", mass)
+        """Change a body's mass (kg) and optionally moment (kg·m²; ∞ locks its rotation); the
+        solver follows."""
+        in_range("mass", mass, MIN_MASS, MAX_MASS, "kg")
+        if moment is not None and moment != math.inf:
+            in_range("moment", moment, MIN_MOMENT, MAX_MOMENT, "kg·m²")
         body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only a dynamic body has a mass to change")
         body.mass = mass
         if moment is not None:
-            positive("moment", moment)
             body.moment = moment
         self.solver.refresh_masses()
         self._registry_dirty = True
+
+    def sleep(self, name: str) -> None:
+        """Put a body to sleep now, with every dynamic body it touches or is jointed to.
+
+        Chipmunk sleeps and wakes such a group together; a body put to sleep alone while it
+        touches an awake one corrupts its memory, and one put to sleep twice aborts the process.
+        So the whole group is woken, then put to sleep around ``name``; a sleeping body is left
+        as it is. Any force, contact or change of gravity wakes the group again.
+        """
+        if not math.isfinite(self._config.sleep_time):
+            raise ValueError(
+                f"{name}: sleeping is off in this world (WorldConfig.sleep_time = inf); "
+                "give the world a finite sleep_time to put bodies to sleep"
+            )
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only a dynamic body can sleep")
+        if body.is_sleeping:
+            return
+        group = _group(body)
+        for other in group:
+            other.activate()
+        body.sleep()
+        for other in group:
+            if other is not body:
+                other.sleep_with_group(body)
+
+    def wake(self, name: str) -> None:
+        """Wake a sleeping body and its group (nothing happens to an awake one)."""
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only a dynamic body sleeps or wakes")
+        body.activate()
 
     def add_box(
         self,
@@ -344,7 +424,11 @@ class World:
         elasticity: float = 0.0,
     ) -> pymunk.Body:
         """A dynamic box of ``size`` (w, h in m) and ``mass`` (kg)."""
-        positive("mass", mass)
+        in_range("mass", mass, MIN_MASS, MAX_MASS, "kg")
+        _check_size("size", size)
+        bounded_vec("position", position, MAX_COORDINATE, "m")
+        bounded("angle", angle, MAX_ANGLE, "rad")
+        _check_surface("", friction, elasticity)
         body = pymunk.Body(mass, pymunk.moment_for_box(mass, size))
         body.position = position
         body.angle = angle
@@ -363,6 +447,10 @@ class World:
         elasticity: float = 0.0,
     ) -> pymunk.Segment:
         """A static segment from ``a`` to ``b`` (m) on the space's static body."""
+        bounded_vec("a", a, MAX_COORDINATE, "m")
+        bounded_vec("b", b, MAX_COORDINATE, "m")
+        in_range("radius", radius, 0.0, MAX_LENGTH, "m")
+        _check_surface("", friction, elasticity)
         seg = pymunk.Segment(self.space.static_body, a, b, radius)
         seg.friction = friction
         seg.elasticity = elasticity
@@ -410,7 +498,10 @@ class World:
         category: Category = Category.APPLIED,
     ) -> None:
         """Apply ``force`` (N, world frame) at world ``point`` (m) during the coming step."""
-        b = self.body(body) if isinstance(body, str) else body
+        b = self._own(body)
+        bounded_vec("force", force, RUNAWAY_FORCE if self._config.guard else math.inf, "N")
+        if point is not None:
+            bounded_vec("point", point, MAX_COORDINATE, "m")
         if b.body_type == pymunk.Body.DYNAMIC:
             self.ledger.add(b, force, point=point, category=category)
             self._plan_dirty = True
@@ -424,8 +515,17 @@ class World:
         category: Category = Category.APPLIED,
     ) -> None:
         """Apply ``impulse`` (N·s) spread over the coming step, as the force impulse/dt."""
+        bounded_vec("impulse", impulse, MAX_IMPULSE, "N·s")
         dt = self.config.dt
         self.apply_force(body, (impulse[0] / dt, impulse[1] / dt), point=point, category=category)
+
+    def _own(self, body: pymunk.Body | str) -> pymunk.Body:
+        """The body by name, or a body object that is in this world (``ValueError`` otherwise)."""
+        if isinstance(body, str):
+            return self.body(body)
+        if not isinstance(body, pymunk.Body) or body.space is not self.space:
+            raise ValueError(f"body: expected a body name or a body of this world, got {body!r}")
+        return body
 
     def forces(self, name: str) -> BodyForces:
         """The last readings of a tracked body."""
@@ -483,6 +583,8 @@ class World:
             self.space.step(self._config.dt)
             self.steps += 1
             self.time = self.steps * self._config.dt
+            if self.steps >= self._guard_next:
+                self._guard_all()
             return
         run = self._run_timed if self._config.timing else self._run
         # 1. inputs: scripts and keyboards turn into intents
@@ -514,6 +616,11 @@ class World:
         self._field_force = None
         self.steps += 1
         self.time = self.steps * self.config.dt  # not a running sum: no drift over long runs
+        # the guard: nothing non-finite or runaway reaches the observers
+        if self.solver.bodies and self._config.guard:
+            self._guard_tracked()
+        if self.steps >= self._guard_next:
+            self._guard_all()
         # 9. observe: recorders, checks, views — read-only
         if self._observers:
             run(Stage.OBSERVE, self._run_hooks, self._observers)
@@ -535,6 +642,35 @@ class World:
         timing.total += elapsed
         timing.calls += 1
         timing.last = elapsed
+
+    def _guard_tracked(self) -> None:
+        """Stop if a tracked body's force reading is not finite or beyond the runaway bound."""
+        bad = first_bad(self.solver.engine, FORCE_BOUNDS)
+        if bad is not None:
+            row, col = bad
+            body = self.solver.bodies[row]
+            value = float(self.solver.engine[row, col])
+            self._runaway(body.id, FORCE_COLUMNS[col], value, float(FORCE_BOUNDS[col]))
+
+    def _guard_all(self) -> None:
+        """Stop if any body's position, angle or velocity is not finite or runs away."""
+        self._guard_next = self.steps + GUARD_EVERY
+        buffer = self._state_buffer
+        buffer.clear()
+        batch.get_space_bodies(self.space, _STATE, buffer)
+        rows = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 6)
+        bad = first_bad(rows, STATE_BOUNDS)
+        if bad is not None:
+            row, col = bad
+            body_id = int(np.frombuffer(buffer.int_buf(), dtype=np.uintp)[row])
+            self._runaway(body_id, STATE_COLUMNS[col], float(rows[row, col]), STATE_BOUNDS[col])
+
+    def _runaway(
+        self, body_id: int, column: tuple[str, str, str], value: float, bound: float
+    ) -> None:
+        name = self._names.get(body_id)
+        who = repr(name) if name is not None else f"an unnamed body (id {body_id})"
+        raise RunawayError(who, self.steps, self.time, column, value, float(bound))
 
     def _run_hooks(self, hooks: list[Hook]) -> None:
         for hook in hooks:
@@ -688,3 +824,87 @@ class World:
             g = self.gravity_at(self._names[self.solver.bodies[row].id])
             n = math.hypot(*g)
             self.perceived.up[row] = (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
+
+
+# -- argument checks -----------------------------------------------------------------------------
+
+
+def _check_surface(prefix: str, friction: float, elasticity: float) -> None:
+    in_range(f"{prefix}friction", friction, 0.0, 1e3, "(Coulomb coefficient)")
+    in_range(f"{prefix}elasticity", elasticity, 0.0, 1.0, "(restitution)")
+
+
+def _check_size(name: str, size: Sequence[float]) -> None:
+    bounded_vec(name, size, MAX_LENGTH, "m")
+    for i, v in enumerate(size):
+        if v <= 0.0:
+            raise ValueError(f"{name}[{i}]: expected a length > 0 m, got {v!r}")
+
+
+def _check_body(name: str, body: pymunk.Body, shapes: Sequence[pymunk.Shape]) -> None:
+    """Refuse what pymunk asserts on, aborts on or turns into NaN, before it sees it."""
+    if not isinstance(body, pymunk.Body):
+        raise ValueError(f"{name}: expected a pymunk.Body, got {body!r}")
+    if body.space is not None:
+        raise ValueError(f"{name}: the body is already in a space")
+    if body.body_type == pymunk.Body.DYNAMIC:
+        in_range(f"{name}.mass", body.mass, MIN_MASS, MAX_MASS, "kg")
+        if body.moment != math.inf:
+            in_range(f"{name}.moment", body.moment, MIN_MOMENT, MAX_MOMENT, "kg·m²")
+    bounded_vec(f"{name}.position", tuple(body.position), MAX_COORDINATE, "m")
+    bounded(f"{name}.angle", body.angle, MAX_ANGLE, "rad")
+    bounded_vec(f"{name}.velocity", tuple(body.velocity), MAX_SPEED, "m/s")
+    bounded(f"{name}.angular_velocity", body.angular_velocity, MAX_ANGULAR_SPEED, "rad/s")
+    bounded_vec(f"{name}.force", tuple(body.force), MAX_FORCE, "N")
+    for i, shape in enumerate(shapes):
+        where = f"{name}.shapes[{i}]"
+        if not isinstance(shape, pymunk.Shape) or shape.body is not body:
+            raise ValueError(f"{where}: expected a shape of this body, got {shape!r}")
+        if shape.space is not None:
+            raise ValueError(f"{where}: the shape is already in a space")
+        _check_surface(f"{where}.", shape.friction, shape.elasticity)
+        in_range(f"{where}.radius", _radius(shape), 0.0, MAX_LENGTH, "m")
+        for j, point in enumerate(_points(shape)):
+            bounded_vec(f"{where}.points[{j}]", tuple(point), MAX_COORDINATE, "m (body frame)")
+
+
+def _radius(shape: pymunk.Shape) -> float:
+    if isinstance(shape, pymunk.Circle | pymunk.Segment | pymunk.Poly):
+        return float(shape.radius)
+    return 0.0
+
+
+def _points(shape: pymunk.Shape) -> list[pymunk.Vec2d]:
+    """A shape's defining points in the body's frame."""
+    if isinstance(shape, pymunk.Circle):
+        return [shape.offset]
+    if isinstance(shape, pymunk.Segment):
+        return [shape.a, shape.b]
+    if isinstance(shape, pymunk.Poly):
+        return list(shape.get_vertices())
+    return []
+
+
+def _group(body: pymunk.Body) -> list[pymunk.Body]:
+    """The dynamic bodies connected to ``body`` by contacts or joints, ``body`` first (static and
+    kinematic bodies do not connect, as in Chipmunk's own sleeping)."""
+    group = [body]
+    seen = {body.id}
+    k = 0
+    while k < len(group):
+        current = group[k]
+        k += 1
+        neighbours = _touching(current)
+        neighbours.extend(b for c in current.constraints for b in (c.a, c.b))
+        for other in neighbours:
+            if other.body_type == pymunk.Body.DYNAMIC and other.id not in seen:
+                seen.add(other.id)
+                group.append(other)
+    return group
+
+
+def _touching(body: pymunk.Body) -> list[pymunk.Body]:
+    """The bodies of every arbiter of ``body`` (itself included)."""
+    out: list[pymunk.Body] = []
+    body.each_arbiter(lambda arb: out.extend(shape.body for shape in arb.shapes))
+    return out
