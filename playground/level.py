@@ -20,6 +20,7 @@ playground.level.LevelError: <string>: settings.dtt: unknown key (did you mean '
 from __future__ import annotations
 
 import atexit
+import copy
 import dataclasses
 import difflib
 import functools
@@ -37,7 +38,15 @@ from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    Strict,
+    ValidationError,
+    field_validator,
+)
 
 __all__ = [
     "Level",
@@ -57,8 +66,26 @@ Finite = Annotated[float, Field(allow_inf_nan=False)]
 Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False)]
 NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
 Unit = Annotated[float, Field(ge=-1.0, le=1.0, allow_inf_nan=False)]
-Vec = tuple[Finite, Finite]
+# Tables are strict (no true -> 1.0, no "10" -> 10, as the JSON Schema says); a TOML array is a
+# list, so fixed-length arrays are the one place a conversion (list -> tuple) is allowed.
+Vec = Annotated[tuple[Finite, Finite], Strict(False)]
+
+
+def _whole(value: object) -> object:
+    """A float with no fraction is an integer (as in JSON Schema): 2.0 -> 2."""
+    if isinstance(value, float) and value.is_integer():
+        return int(value)
+    return value
+
+
+Whole = Annotated[int, BeforeValidator(_whole)]
 Name = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[A-Za-z_][A-Za-z0-9_\-]*$")]
+
+SCHEMA_ID = (
+    "https://github.com/pymunk-playground/pymunk-playground/raw/main/levels/level.schema.json"
+)
+"""The schema's ``$id``: where editors can fetch it (a level file names it in a ``#:schema``
+first line, or the folder's own ``level.schema.json``)."""
 
 STATIC = "static"
 """The body name joints use for the fixed world."""
@@ -67,7 +94,7 @@ STATIC = "static"
 class _Model(BaseModel):
     """Every table of a level: unknown keys are errors, values are frozen."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=True)
 
 
 # -- settings ------------------------------------------------------------------------------------
@@ -77,8 +104,10 @@ class Settings(_Model):
     """Simulation settings (see :class:`playground.WorldConfig`)."""
 
     dt: Positive = Field(default=1.0 / 120.0, description="Fixed step, s.")
-    substeps: int = Field(default=1, ge=1, le=64, description="space.step calls per step.")
-    iterations: int = Field(default=10, ge=1, le=1000, description="Solver iterations per substep.")
+    substeps: Whole = Field(default=1, ge=1, le=64, description="space.step calls per step.")
+    iterations: Whole = Field(
+        default=10, ge=1, le=1000, description="Solver iterations per substep."
+    )
     damping: float = Field(
         default=1.0, gt=0.0, le=1.0, description="Fraction of velocity kept per second (1: none)."
     )
@@ -175,7 +204,7 @@ SimpleGravity = Annotated[
 class Zone(_Model):
     """A box (x0, y0, x1, y1), m, with its own field."""
 
-    box: tuple[Finite, Finite, Finite, Finite]
+    box: Annotated[tuple[Finite, Finite, Finite, Finite], Strict(False)]
     field: SimpleGravity
 
     @field_validator("box")
@@ -219,7 +248,7 @@ class Box(_Surface):
     """A box of size (w, h) m centred at ``center``, turned by ``angle`` rad."""
 
     kind: Literal["box"]
-    size: tuple[Positive, Positive]
+    size: Annotated[tuple[Positive, Positive], Strict(False)]
     center: Vec = (0.0, 0.0)
     angle: Finite = 0.0
     radius: NonNegative = 0.0
@@ -255,7 +284,7 @@ class Ring(_Surface):
 
     kind: Literal["ring"]
     radius: Positive
-    segments: int = Field(default=48, ge=3, le=512)
+    segments: Whole = Field(default=48, ge=3, le=512)
     thickness: Positive = 0.1
 
 
@@ -632,7 +661,7 @@ class Expectation(_Model):
     filtered: bool = Field(default=False, description="1€-filtered force reading.")
     check: Literal["at", "always", "eventually", "mean"] = "at"
     t: NonNegative | None = Field(default=None, description="For check = 'at', s.")
-    window: tuple[NonNegative, NonNegative] | None = Field(
+    window: Annotated[tuple[NonNegative, NonNegative], Strict(False)] | None = Field(
         default=None, description="(start, end), s."
     )
     equals: Finite | Vec | str | None = None
@@ -676,7 +705,10 @@ class Level(_Model):
     model_config = ConfigDict(
         extra="forbid",
         frozen=True,
-        json_schema_extra={"$schema": "https://json-schema.org/draft/2020-12/schema"},
+        json_schema_extra={
+            "$schema": "https://json-schema.org/draft/2020-12/schema",
+            "$id": SCHEMA_ID,
+        },
     )
 
     title: str = Field(min_length=1, max_length=80)
@@ -863,8 +895,12 @@ def _show(value: object) -> str:
 # -- cross-references ----------------------------------------------------------------------------
 
 
-def _references(level: Level) -> Iterator[Problem]:
-    """Names that must exist, be unique, or be of the right kind."""
+def _references(level: Level, assumed: frozenset[str] = frozenset()) -> Iterator[Problem]:
+    """Names that must exist, be unique, or be of the right kind.
+
+    ``assumed`` are names of bodies left out of ``level`` because their tables are invalid
+    (see :func:`validate`): references to them are not reported.
+    """
     names = level.body_names()
     seen: set[str] = set()
     for name in names:
@@ -879,7 +915,7 @@ def _references(level: Level) -> Iterator[Problem]:
     dynamic += [e.prop.name for e in level.events if isinstance(e, Spawn)]
 
     def known(path: str, name: str, pool: Sequence[str], what: str) -> Iterator[Problem]:
-        if name not in pool:
+        if name not in pool and name not in assumed:
             listing = ", ".join(pool) or "none"
             yield Problem(
                 path, f"no {what} named {name!r}{_suggest(name, pool)} (known: {listing})"
@@ -913,9 +949,11 @@ def _references(level: Level) -> Iterator[Problem]:
         if isinstance(event, FlipGravity) and not isinstance(level.gravity, UniformGravity):
             yield Problem(f"events.{i}", "flip_gravity turns a uniform field; use rotating turns")
     follow = level.view.follow
-    if follow is not None and follow not in names:
+    if follow is not None and follow not in names and follow not in assumed:
         yield from known("view.follow", follow, names, "body")
     for i, exp in enumerate(level.expect):
+        if exp.body in assumed or exp.relative_to in assumed:
+            continue
         yield from _check_expectation(f"expect.{i}", exp, level, names, actors, tracked)
     yield from _check_catches(level)
 
@@ -1106,13 +1144,127 @@ def validate(data: object, source: str = "<data>") -> Level:
     try:
         level = Level.model_validate(data)
     except ValidationError as exc:
-        raise LevelError(source, _problems(exc)) from None
+        raise LevelError(source, _problems(exc) + _salvaged_references(data, exc)) from None
     except RecursionError:
         raise LevelError(source, [Problem("", "document nested too deeply")]) from None
     problems = list(_references(level))
     if problems:
         raise LevelError(source, problems)
     return level
+
+
+_SALVAGE_ROUNDS = 4
+"""Passes that set invalid parts aside before giving up on reporting references too."""
+
+Loc = tuple[int | str, ...]
+
+
+def _salvaged_references(data: object, exc: ValidationError) -> list[Problem]:
+    """Reference problems of the document's valid part, reported beside its structural ones.
+
+    Every invalid part is set aside: a list item (a prop, an expectation...) whole, a table key
+    (it takes its default). The bodies named inside set-aside items are assumed to exist, and
+    nothing is said about the set-aside parts. Empty if what remains still does not validate.
+    """
+    if not isinstance(data, dict):
+        return []
+    aside: set[Loc] = set()
+    kept: dict[Loc, list[int]] = {}
+    for _ in range(_SALVAGE_ROUNDS):
+        aside |= {_aside(tuple(e["loc"]), e["type"], kept) for e in exc.errors()}
+        doc, kept, assumed = _without(data, aside)
+        try:
+            level = Level.model_validate(doc)
+        except ValidationError as again:
+            exc = again
+            continue
+        except RecursionError:
+            return []
+        return [
+            Problem(_renumber_path(p.path, kept), p.message)
+            for p in _references(level, frozenset(assumed))
+        ]
+    return []
+
+
+def _aside(loc: Loc, kind: str, kept: dict[Loc, list[int]]) -> Loc:
+    """What to set aside for an error at ``loc`` (pydantic's, in the numbering of the document
+    whose lists ``kept`` thinned): its outermost list item, else the table key (the table itself
+    when the key is missing), in the original document's numbering."""
+    tags, _ = _walk(loc)
+    loc = _renumber(tuple(k for k in loc if k not in tags), kept)
+    for i, key in enumerate(loc):
+        if isinstance(key, int):
+            return loc[: i + 1]
+    return loc[:-1] if kind == "missing" else loc
+
+
+def _without(data: dict[str, Any], aside: set[Loc]) -> tuple[Any, dict[Loc, list[int]], set[str]]:
+    """A copy of ``data`` without the ``aside`` parts; for each thinned list the original index
+    of every kept item; the body names found inside the removed items."""
+    doc = copy.deepcopy(data)
+    kept: dict[Loc, list[int]] = {}
+    assumed: set[str] = set()
+    for loc in sorted(aside, key=lambda k: (len(k), [str(x) for x in k]), reverse=True):
+        if not loc:
+            continue
+        parent: Any = doc
+        for key in loc[:-1]:
+            try:
+                parent = parent[key]
+            except (KeyError, IndexError, TypeError):
+                parent = None
+                break
+        last = loc[-1]
+        if isinstance(parent, list) and isinstance(last, int) and last < len(parent):
+            kept.setdefault(loc[:-1], list(range(len(parent))))
+            assumed |= set(_names(parent[last]))
+            parent[last] = _GONE
+        elif isinstance(parent, dict) and last in parent:
+            del parent[last]
+    for where in list(kept):
+        parent = doc
+        try:
+            for key in where:
+                parent = parent[key]
+        except (KeyError, IndexError, TypeError):
+            del kept[where]  # inside a part set aside whole
+            continue
+        kept[where] = [i for i, item in zip(kept[where], parent, strict=True) if item is not _GONE]
+        parent[:] = [item for item in parent if item is not _GONE]
+    return doc, kept, assumed
+
+
+_GONE = object()
+
+
+def _names(item: object) -> Iterator[str]:
+    """Every string under a ``name`` key inside ``item``."""
+    if isinstance(item, dict):
+        for key, value in item.items():
+            if key == "name" and isinstance(value, str):
+                yield value
+            yield from _names(value)
+    elif isinstance(item, list):
+        for value in item:
+            yield from _names(value)
+
+
+def _renumber(loc: Loc, kept: dict[Loc, list[int]]) -> Loc:
+    """``loc`` in the thinned document's numbering -> the original document's."""
+    out: list[int | str] = []
+    for key in loc:
+        where = tuple(out)
+        if isinstance(key, int) and where in kept and key < len(kept[where]):
+            out.append(kept[where][key])
+        else:
+            out.append(key)
+    return tuple(out)
+
+
+def _renumber_path(path: str, kept: dict[Loc, list[int]]) -> str:
+    loc = tuple(int(k) if k.isdigit() else k for k in path.split(".")) if path else ()
+    return ".".join(str(k) for k in _renumber(loc, kept))
 
 
 def load(path: str | os.PathLike[str]) -> Level:
