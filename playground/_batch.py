@@ -18,7 +18,7 @@ _READ = _F.BODY_ID | _F.VELOCITY | _F.ANGULAR_VELOCITY | _F.FORCE | _F.TORQUE
 _READ_POS = _F.BODY_ID | _F.POSITION
 _WRITE = _F.FORCE | _F.TORQUE
 _A = batch.ArbiterFields
-_ARBITERS = _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.NORMAL
+_ARBITERS = _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.IS_FIRST_CONTACT | _A.NORMAL
 
 
 class BodyRows:
@@ -72,16 +72,18 @@ def read_positions(
 
 def read_arbiters(
     space: pymunk.Space, buffer: batch.Buffer
-) -> tuple[NDArray[np.uintp], NDArray[np.float64]]:
-    """Every arbiter as (id_a, id_b) and (jx, jy, nx, ny) rows.
+) -> tuple[NDArray[np.uintp], NDArray[np.bool_], NDArray[np.float64]]:
+    """Every arbiter as (id_a, id_b), its first-contact flag and (jx, jy, nx, ny) rows.
 
     ``total_impulse`` (N·s) is the impulse applied to body A; body B received its negative.
-    The normal points from A to B.
+    The normal points from A to B. First contact: the arbiter's contacts were made this step
+    (not warm-started).
     """
     buffer.clear()
     batch.get_space_arbiters(space, _ARBITERS, buffer)
-    ids = np.frombuffer(buffer.int_buf(), dtype=np.uintp).reshape(-1, 2).copy()
-    return ids, np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 4).copy()
+    ints = np.frombuffer(buffer.int_buf(), dtype=np.uintp).reshape(-1, 3)
+    floats = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 4).copy()
+    return ints[:, 0:2].copy(), ints[:, 2] != 0, floats
 
 
 def lookup(keys: NDArray[np.uintp], ids: NDArray[np.uintp]) -> NDArray[np.intp]:

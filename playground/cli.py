@@ -12,8 +12,8 @@ Each subcommand is a function ``cmd_<name>(args) -> exit code`` registered in :f
 
 for every tracked body, at the last step, SI units, vectors as ``[x, y]``. ``state`` is null for a
 body without a controller; ``contact`` and ``constraint`` are null unless the level sets
-``settings.contact_split``; ``support_filtered`` is −m · ``perceived_gravity`` (the 1€-filtered
-support force). The exit code is 1 when a check fails.
+``settings.contact_split``, and on a step whose split is unknown; ``support_filtered`` is
+−m · ``perceived_gravity`` (the 1€-filtered support force). The exit code is 1 when a check fails.
 
 >>> main(["check", "incline"])
 ok      incline: Incline

@@ -10,11 +10,18 @@ and the **engine force** is J/dt. Summed over substeps, read for every tracked b
 ``pymunk.batch`` and numpy. The **ledger** records the forces we apply by category, so that the
 **support force** (engine + the forces that stand in for contacts: hover, drive, grip) and the
 **specific force** (support / m: what an inner ear feels) come out right.
+
+With the contact split on, the solver also sums each body's arbiter impulses (``total_impulse``):
+the rest of the engine force is what joints did. That sum is only right when Chipmunk applied
+what it reports, which it does not on a step where a contact is made again from an arbiter still
+cached or where the warm start was rescaled (see :class:`ForceSolver`): such steps get no split
+(NaN, ``split_valid`` False), never a wrong one.
 """
 
 from __future__ import annotations
 
 import math
+from collections import deque
 from dataclasses import dataclass
 from enum import Enum
 
@@ -130,17 +137,21 @@ class BodyForces:
     """One tracked body's readings after a step (plain values, SI).
 
     Attributes:
-        valid: False when the body was not integrated this step (asleep, or absent from the
-            space); the other fields then hold the last valid reading.
+        valid: False when the body was not integrated through the whole step (asleep after one of
+            its substeps, or absent from the space); the other fields then hold the last valid
+            reading.
         engine: force the engine applied (contacts + joints), N.
         engine_torque: torque the engine applied, N·m.
         support: engine + our SUPPORT forces (hover, drive, grip), N.
         specific: support / m — what an accelerometer on the body reads, m/s².
         passive: gravity and fields on the body, N.
         applied: our APPLIED forces (self-propulsion, scripts), N.
-        contact: sum of the body's arbiter impulses / dt, N (NaN unless the split is on).
+        contact: sum of the body's arbiter impulses / dt, N (NaN unless ``split_valid``).
         contact_normal / contact_friction: the contact force's normal and tangential parts, N.
-        constraint: engine − contact: what joints did, N (NaN unless the split is on).
+        constraint: engine − contact: what joints did, N (NaN unless ``split_valid``).
+        split_valid: the contact split is on and known this step. It is unknown (the four
+            fields above NaN) on a step where one of the body's arbiters reports an impulse the
+            engine did not apply (see :class:`ForceSolver`).
     """
 
     valid: bool
@@ -154,6 +165,7 @@ class BodyForces:
     contact_normal: Vec
     contact_friction: Vec
     constraint: Vec
+    split_valid: bool
 
 
 def _vec(a: NDArray[np.float64]) -> Vec:
@@ -169,10 +181,30 @@ class ForceSolver:
     Per step the world calls :meth:`before_step` (reads v₀, ω₀ and the forces about to be
     integrated, straight from the engine), :meth:`after_substep` after each ``space.step`` and
     :meth:`finish`. Reading v₀ just before the step means every step — even the first after a body
-    is added — has a reading; a body absent from either read, or asleep after the step (not
-    integrated), gets none and keeps its last values (``valid`` False).
+    is added — has a reading; a body absent from either read, or asleep after any substep (not
+    integrated in it), gets none and keeps its last values (``valid`` False).
 
     Results are arrays with one row per tracked body, in :attr:`bodies` order.
+
+    **The contact split** sums ``Arbiter.total_impulse``: the impulses Chipmunk accumulated on the
+    arbiter's contacts (``jnAcc``, ``jtAcc``). They are the impulses it applied, except in two
+    cases read from its sources (``cpArbiter.c``, ``cpSpaceStep.c``):
+
+    - *a contact made again while its arbiter is still cached.* An arbiter outlives its contact
+      by ``space.collision_persistence`` steps. When the shapes touch again, ``cpArbiterUpdate``
+      copies the accumulated impulses of the old contacts into the new ones, but the arbiter is
+      a first contact, so ``cpArbiterApplyCachedImpulse`` does not apply them: the copied impulse
+      is reported and never applied (on a box riding a platform that accelerates downward, one
+      step in three read up to 5·m·g of "joint" force with no joint in the scene). The world
+      sets ``collision_persistence`` to 1, so no arbiter outlives a step without contact; with a
+      larger value, a first contact between two bodies that had an arbiter within that many
+      steps (but not in the step before) makes the split of both unknown for the step.
+    - *a warm start rescaled.* A continuing contact is warm-started with its accumulated impulse
+      times h/h_prev when the substep length changes, while the accumulated impulse itself is
+      not rescaled: on the first substep at a new length, bodies with a continuing contact get
+      no split.
+
+    Unknown means NaN with ``split_valid`` False — never a wrong number.
     """
 
     def __init__(self, *, contact_split: bool = False, check_sleep: bool = False) -> None:
@@ -201,7 +233,11 @@ class ForceSolver:
         self.contact = np.full((n, 2), np.nan)
         self.contact_normal = np.full((n, 2), np.nan)
         self.constraint = np.full((n, 2), np.nan)
+        self.split_valid = np.zeros(n, dtype=bool)
         self._arb_buffer = batch.Buffer()
+        # Body pairs with an arbiter in each recent substep: (substep stamp, sorted pair keys),
+        # newest last, kept only while collision_persistence > 1.
+        self._pairs: deque[tuple[int, NDArray[np.uint64]]] = deque()
         self._rebuild_keys()
 
     # -- membership -------------------------------------------------------------------------
@@ -221,6 +257,7 @@ class ForceSolver:
         for name in ("contact", "contact_normal", "constraint"):
             setattr(self, name, np.vstack([getattr(self, name), np.full((1, 2), np.nan)]))
         self.valid = np.append(self.valid, False)
+        self.split_valid = np.append(self.split_valid, False)
         self._keys_dirty = True
         return len(self.bodies) - 1
 
@@ -231,7 +268,7 @@ class ForceSolver:
             return
         del self.bodies[idx]
         self._row_by_id = {b.id: i for i, b in enumerate(self.bodies)}
-        for name in (*_READINGS, "contact", "contact_normal", "constraint", "valid"):
+        for name in (*_READINGS, "contact", "contact_normal", "constraint", "valid", "split_valid"):
             setattr(self, name, np.delete(getattr(self, name), idx, axis=0))
         self._keys_dirty = True
 
@@ -261,6 +298,9 @@ class ForceSolver:
         self._seen = np.zeros(n, dtype=bool)
         self._contact_j = np.zeros((n, 2))
         self._contact_jn = np.zeros((n, 2))
+        self._split_unknown = np.zeros(n, dtype=bool)
+        # The world may have stepped bare (nothing tracked) since the pairs were recorded.
+        self._pairs.clear()
         self._keys_dirty = False
 
     def row_of(self, body: pymunk.Body) -> int | None:
@@ -313,6 +353,7 @@ class ForceSolver:
         if self.contact_split:
             self._contact_j.fill(0.0)
             self._contact_jn.fill(0.0)
+            self._split_unknown.fill(False)
         order = self._order(ids)
         if order is not None:
             # Every tracked body is present (the usual case): one gather into tracked order;
@@ -337,9 +378,20 @@ class ForceSolver:
         self._vlast = self._v0
 
     def after_substep(
-        self, space: pymunk.Space, ids: NDArray[np.uintp], vel: NDArray[np.float64], last: bool
+        self,
+        space: pymunk.Space,
+        ids: NDArray[np.uintp],
+        vel: NDArray[np.float64],
+        last: bool,
+        *,
+        stamp: int = 0,
+        rescaled: bool = False,
     ) -> None:
-        """Accumulate one substep: velocities now (``vel`` rows vx, vy, w), contact impulses."""
+        """Accumulate one substep: velocities now (``vel`` rows vx, vy, w), contact impulses.
+
+        ``stamp`` counts the space's steps (1 for its first); ``rescaled``: this substep's length
+        differs from the one before it, so Chipmunk rescaled its warm starts.
+        """
         order = self._order(ids)
         if order is not None:
             sub = np.take(vel, order, axis=0)
@@ -358,11 +410,22 @@ class ForceSolver:
                 self._vsum += sub
             self._substeps_summed += 1
         self._vlast = sub
+        if self.check_sleep:
+            # Asleep after a substep: not integrated in it (a body woken by a contact is
+            # integrated in the substep that wakes it; one asleep for part of the step is not
+            # integrated for the whole step, and its reading would be off by the gravity it
+            # missed).
+            self._seen &= np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
         if self.contact_split:
-            self._accumulate_contacts(space)
+            self._accumulate_contacts(space, stamp, rescaled)
 
-    def _accumulate_contacts(self, space: pymunk.Space) -> None:
-        pairs, data = read_arbiters(space, self._arb_buffer)
+    def _accumulate_contacts(self, space: pymunk.Space, stamp: int, rescaled: bool) -> None:
+        pairs, first, data = read_arbiters(space, self._arb_buffer)
+        stale = self._stale(pairs, first, stamp, int(space.collision_persistence), rescaled)
+        if stale is not None:
+            for col in (0, 1):
+                hit = lookup(self._keys, pairs[stale, col])
+                self._split_unknown[self._key_row[hit[hit >= 0]]] = True
         if len(pairs) == 0:
             return
         j = data[:, 0:2]
@@ -384,6 +447,47 @@ class ForceSolver:
         order = np.lexsort((v[:, 3], v[:, 2], v[:, 1], v[:, 0], idx))
         np.add.at(self._contact_j, idx[order], v[order, 0:2])
         np.add.at(self._contact_jn, idx[order], v[order, 2:4])
+
+    def _stale(
+        self,
+        pairs: NDArray[np.uintp],
+        first: NDArray[np.bool_],
+        stamp: int,
+        persistence: int,
+        rescaled: bool,
+    ) -> NDArray[np.bool_] | None:
+        """Which arbiters may report an impulse Chipmunk did not apply (None: none may).
+
+        See the class docstring. A cached arbiter was last in contact between ``persistence`` and
+        2 steps ago; when the recorded pairs do not cover those steps (recording just began, or
+        a substep was not recorded), every first contact is suspect.
+        """
+        stale = ~first if rescaled and len(pairs) else None
+        if persistence < 2:
+            self._pairs.clear()
+            return stale
+        lo = np.minimum(pairs[:, 0], pairs[:, 1]).astype(np.uint64)
+        hi = np.maximum(pairs[:, 0], pairs[:, 1]).astype(np.uint64)
+        keys = (lo << np.uint64(32)) | hi
+        history = self._pairs
+        if history and history[-1][0] != stamp - 1:
+            history.clear()  # a gap: the substeps in between were not seen
+        if first.any():
+            since = max(1, stamp - persistence)
+            fits = not (hi >> np.uint64(32)).any()  # ids too large for a key: suspect all
+            covered = fits and (stamp <= 1 or (bool(history) and history[0][0] <= since))
+            old = [k for s, k in history if s <= stamp - 2]
+            if not covered:
+                cached = first
+            elif old:
+                cached = first & np.isin(keys, np.concatenate(old))
+            else:
+                cached = np.zeros_like(first)
+            stale = cached if stale is None else stale | cached
+        history.append((stamp, keys))
+        while history[0][0] < stamp - persistence:
+            history.popleft()
+        return stale if stale is not None and stale.any() else None
 
     def finish(
         self,
@@ -437,8 +541,6 @@ class ForceSolver:
         specific = np.multiply(support[:, 0:2], self._inv_m2)
 
         ok = self._seen
-        if self.check_sleep:
-            ok = ok & np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
         if not ok.all():
             # Rows without a reading keep their last values.
             stale = ~ok
@@ -458,6 +560,16 @@ class ForceSolver:
             self.contact[rows_ok] = self._contact_j[rows_ok] / dt
             self.contact_normal[rows_ok] = self._contact_jn[rows_ok] / dt
             self.constraint[rows_ok] = self.engine[rows_ok] - self.contact[rows_ok]
+            self.split_valid[rows_ok] = True
+            unknown = np.nonzero(ok & self._split_unknown)[0]
+            if len(unknown):
+                for name in ("contact", "contact_normal", "constraint"):
+                    getattr(self, name)[unknown] = np.nan
+                self.split_valid[unknown] = False
+        elif self.split_valid.any():  # the split was just turned off
+            for name in ("contact", "contact_normal", "constraint"):
+                getattr(self, name).fill(np.nan)
+            self.split_valid.fill(False)
 
     def _m3_over(self, dt: float) -> NDArray[np.float64]:
         """[m, m, I] / dt, cached while dt and the masses stay the same."""
@@ -517,4 +629,5 @@ class ForceSolver:
             contact_normal=_vec(self.contact_normal[row]),
             contact_friction=_vec(self.contact[row] - self.contact_normal[row]),
             constraint=_vec(self.constraint[row]),
+            split_valid=bool(self.split_valid[row]),
         )

@@ -161,7 +161,9 @@ class World:
     Bodies are added by name (:meth:`add`); the world registers masses for per-body gravity and
     tracks forces only for bodies passed to :meth:`track`. Scripts and controllers hook into the
     INPUTS, EVENTS, CONTROL and OBSERVE stages with :meth:`on`; all forces go through
-    :meth:`apply_force` so the solver's ledger knows them.
+    :meth:`apply_force` so the solver's ledger knows them. The space drops an arbiter as soon as
+    its contact ends (``collision_persistence`` 1), so arbiter impulses are the impulses applied
+    (see :class:`~playground.forces.ForceSolver`).
     """
 
     def __init__(
@@ -171,6 +173,16 @@ class World:
     ) -> None:
         self._config = config if config is not None else WorldConfig()
         self.space = pymunk.Space()
+        # Chipmunk keeps an arbiter 3 steps after its contact ends by default; a contact made
+        # again from it starts from the old accumulated impulse without applying it, so the
+        # arbiter reports an impulse the bodies never received (see ForceSolver). Dropping
+        # arbiters at once loses no warm start (such a first contact is never warm-started), and
+        # the new contact no longer starts from an impulse that lets it pull, or grip beyond its
+        # own normal impulse.
+        self.space.collision_persistence = 1
+        # space.step calls outside the bare path (which runs only with nothing tracked): the
+        # solver's substep stamps.
+        self._space_steps = 0
         self._bare = False
         self._plan_dirty = True
         self.time = 0.0
@@ -783,10 +795,20 @@ class World:
                     self._write_forces()
                 else:
                     self.ledger.flush()
+            # Chipmunk rescales warm starts by h / (its last step) when the length changes.
+            rescaled = self._config.contact_split and self.space.current_time_step != h
             self.space.step(h)
+            self._space_steps += 1
             if self.solver.bodies:
                 ids, vel = self._rows.read_velocities(self.space)
-                self.solver.after_substep(self.space, ids, vel, last=k == n - 1)
+                self.solver.after_substep(
+                    self.space,
+                    ids,
+                    vel,
+                    last=k == n - 1,
+                    stamp=self._space_steps,
+                    rescaled=rescaled,
+                )
 
     def _write_forces(self) -> None:
         """Write the forces of the last batch read back, in one batch or per body if sleeping."""

@@ -148,7 +148,7 @@ def test_reverse_integration_equals_arbiter_impulses(scene: Scene, config: World
         world.step()
         for name in names:
             f = world.forces(name)
-            assert f.valid
+            assert f.valid and f.split_valid
             assert close(f.engine, f.contact, TOL_REL, TOL_ABS), (name, world.steps, f)
             if config.substeps == 1:
                 direct = arbiter_force(world, name)
@@ -272,11 +272,17 @@ def test_elevator_support(a: float) -> None:
     assert abs(f.support[0]) <= TOL_ACCEL_REL * m * G
 
 
-TOL_HOP_REL = 1e-2
-"""A body on a floor accelerating downward hops (see DESCENT_CHATTER): over a window T its mean
-support is exact but for the momentum change of the hop in progress at the window's ends (the
-body's velocity then differs from the floor's). Measured over T = 1 s: 3e-3 (a = −3 m/s²) and
-1e-5 (a = −6 m/s²) of m·(g + a); 1e-2 leaves a 3× margin for where a window happens to cut."""
+TOL_HOP_REL = 1e-4
+"""A body on a floor accelerating downward hops (see DESCENT_CHATTER): over a window its mean
+support is exact but for the momentum change of a hop in progress at the window's ends. A window
+that starts and ends on a step in contact has the body moving with the floor at both ends (to the
+contact's bias velocity). Measured over 1 s: 2e-9 (a = −3 m/s²) and 9e-6 (a = −6 m/s²) of
+m·(g + a); 1e-4 is 10× the larger. (A window cut mid-hop errs by m·Δv/T: 1 % for a = −3.)"""
+
+
+def in_contact(world: World, name: str) -> bool:
+    """The body touched something in the last step (its contact sum is not zero)."""
+    return world.forces(name).contact != (0.0, 0.0)
 
 
 @pytest.mark.parametrize("a", [-3.0, -6.0])
@@ -286,8 +292,10 @@ def test_descending_elevator_mean_support(a: float) -> None:
     m = 2.0
     world = box_on_platform(Elevator(acceleration=a, start_time=0.5), friction=0.8, mass=m)
     world.run(1.0)
-    support = []
-    for _ in range(round(1.0 / world.config.dt)):
+    while not in_contact(world, "box"):
+        world.step()
+    support: list[float] = []
+    while len(support) < round(1.0 / world.config.dt) or not in_contact(world, "box"):
         world.step()
         support.append(world.forces("box").support[1])
     mean = float(np.mean(support))
