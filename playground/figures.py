@@ -1247,6 +1247,216 @@ def ch7_fd_own_120() -> float:
     return ring_errors(1 / 120).fd_own * 100.0
 
 
+# -- chapter 8: the fixed step -------------------------------------------------------------------
+
+CH8_DISPLAYS = (60.0, 144.0)
+"""Display rates of chapter 8's frame timelines, Hz."""
+
+CH8_FRAMES = 24
+"""Frames drawn in each timeline."""
+
+CH8_HITCH = 0.1
+"""s: one slow frame (a hitch) in chapter 8's 60 Hz timeline."""
+
+
+def steps_per_frame(frame_times: list[float], dt: float) -> list[int]:
+    """Physics steps a fixed-step accumulator runs at each frame of the given wall durations (s):
+    the whole steps of ``dt`` that fit in the time so far, less those already run. (This is the
+    view's Accumulator without its cap on steps per frame.)
+
+    >>> steps_per_frame([1 / 60] * 4, 1 / 120)
+    [2, 2, 2, 2]
+    """
+    total, done, out = 0.0, 0, []
+    for elapsed in frame_times:
+        total += elapsed
+        n = int((total + 1e-9 * dt) // dt) - done
+        done += n
+        out.append(n)
+    return out
+
+
+def ch8_idle_frames_144() -> float:
+    """Share of a 144 Hz display's frames that run no physics step at dt = 1/120 s, %."""
+    n = steps_per_frame([1.0 / 144.0] * 144, DT)
+    return 100.0 * n.count(0) / len(n)
+
+
+def ch8_hitch_steps() -> float:
+    """Steps the accumulator runs on one 0.1 s frame at dt = 1/120 s."""
+    return float(steps_per_frame([CH8_HITCH], DT)[0])
+
+
+@cache
+def jump_apex(dt: float) -> float:
+    """How high the default player's jump lifts its centre, m, with physics stepped at ``dt``."""
+    world = World(WorldConfig(dt=dt))
+    world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+    script = Script(((0.0, Intent()), (1.0, Intent(jump=True)), (1.1, Intent())))
+    player = Controller(world, "player", (0.0, 0.95), source=script)
+    world.run(1.0)
+    y0 = top = player.body.position.y
+    for _ in range(round(1.5 / dt)):
+        world.step()
+        top = max(top, player.body.position.y)
+    return top - y0
+
+
+CH8_RATES = (20.0, 30.0, 60.0, 120.0, 144.0, 240.0)
+"""Hz: the rates chapter 8 steps the jump at, as a game that steps at its display rate would."""
+
+
+def ch8_apex_60() -> float:
+    """Jump apex at dt = 1/60 s, cm."""
+    return 100.0 * jump_apex(1.0 / 60.0)
+
+
+def ch8_apex_144() -> float:
+    """Jump apex at dt = 1/144 s, cm."""
+    return 100.0 * jump_apex(1.0 / 144.0)
+
+
+def ch8_apex_exact() -> float:
+    """The continuous apex v²/(2g) of the 4 m/s take-off, cm."""
+    v = ControllerConfig().jump_speed
+    return 100.0 * v * v / (2.0 * G)
+
+
+def ch8_apex_first_order_60() -> float:
+    """v²/(2g) + v·dt/2 at dt = 1/60 s: the first-order estimate of the stepped apex, cm."""
+    v = ControllerConfig().jump_speed
+    return ch8_apex_exact() + 100.0 * v * (1.0 / 60.0) / 2.0
+
+
+@cache
+def hover_dt_run(dt: float) -> Array:
+    """:func:`hover_run`'s release (ζ = 1, 5 Hz) stepped at ``dt``. Columns: t (s), height −
+    ride height (m)."""
+    world = World(WorldConfig(dt=dt))
+    world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+    cfg = ControllerConfig(lock_rotation=True)
+    floor_top = 0.05
+    start = (0.0, floor_top + cfg.ride_height - HOVER_DROP)
+    player = Controller(world, "player", start, config=cfg)
+    return _record(world, 0.6, lambda w: [player.body.position.y - floor_top - cfg.ride_height])
+
+
+def ch8_hover_limit_hitch() -> float:
+    """The highest hover frequency (ζ = 1) still stable on a 0.1 s step, Hz."""
+    return hover_limit(1.0) / (2.0 * math.pi * CH8_HITCH)
+
+
+def ch8_hover_overshoot_20() -> float:
+    """Overshoot of the critically damped 5 Hz hover stepped at 1/20 s, fraction of the drop."""
+    return float(np.max(hover_dt_run(1.0 / 20.0)[:, 1]) / HOVER_DROP)
+
+
+def ch8_hover_overshoot_120() -> float:
+    """The same at the levels' 1/120 s (critical damping: no overshoot in theory)."""
+    return float(np.max(hover_dt_run(DT)[:, 1]) / HOVER_DROP)
+
+
+# -- chapter 9: contact impulses -----------------------------------------------------------------
+
+DROP_ACCELERATION = 3.0
+"""m/s²: chapter 9's platform accelerates downward at this rate (less than g: the box rides it)."""
+
+DROP_START = 0.5
+"""s: when chapter 9's platform starts to fall."""
+
+
+@cache
+def stale_run(acceleration: float = DROP_ACCELERATION) -> Array:
+    """A 10 kg box on a kinematic platform that starts falling at ``acceleration`` (m/s²), in bare
+    pymunk (no playground code between the reader and the engine).
+
+    Columns: t (s), reverse integration's vertical force m·(v₁ − v₀)/h + m·g, the sum of the
+    box's ``Arbiter.total_impulse`` / h (vertical; N), and 1 where the box touched the platform
+    in the step before the previous one but not in the previous one (a contact re-made while its
+    arbiter was still cached), else 0.
+    """
+    space = pymunk.Space()
+    space.gravity = (0.0, -G)
+    platform = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    floor = pymunk.Poly.create_box(platform, (4.0, 0.2))
+    floor.friction = 1.0
+    space.add(platform, floor)
+    m = 10.0
+    box = pymunk.Body(m, pymunk.moment_for_box(m, (0.5, 0.5)))
+    box.position = (0.0, 0.35)
+    shape = pymunk.Poly.create_box(box, (0.5, 0.5))
+    shape.friction = 1.0
+    space.add(box, shape)
+    rows: list[list[float]] = []
+    touching: list[bool] = []
+    for k in range(round(1.0 / DT)):
+        t = k * DT
+        platform.velocity = (0.0, -acceleration * max(t - DROP_START, 0.0))
+        v0 = box.velocity.y
+        space.step(DT)
+        arbiters: list[pymunk.Arbiter] = []
+        box.each_arbiter(arbiters.append)
+        impulse = sum(
+            (a.total_impulse.y if a.shapes[0].body is box else -a.total_impulse.y) for a in arbiters
+        )
+        remade = len(touching) >= 2 and not touching[-1] and bool(arbiters)
+        touching.append(bool(arbiters))
+        rows.append([t + DT, m * (box.velocity.y - v0) / DT + m * G, impulse / DT, float(remade)])
+    return np.array(rows, dtype=np.float64)
+
+
+def _stale_excess(acceleration: float = DROP_ACCELERATION) -> Array:
+    r = stale_run(acceleration)
+    out: Array = (r[:, 2] - r[:, 1]) / (10.0 * G)
+    return out
+
+
+def ch9_max_excess() -> float:
+    """Largest excess of the arbiter sum over the applied force, in units of m·g."""
+    return float(np.max(np.abs(_stale_excess())))
+
+
+def ch9_stale_steps() -> float:
+    """Steps (in the falling second) on which the arbiter sum is off by more than 1e-9·m·g."""
+    return float(np.count_nonzero(np.abs(_stale_excess()) > 1e-9))
+
+
+def ch9_stale_steps_1() -> float:
+    """The exercise: stale steps with the platform falling at 1 m/s²."""
+    return float(np.count_nonzero(np.abs(_stale_excess(1.0)) > 1e-9))
+
+
+def ch9_max_excess_1() -> float:
+    """The exercise: the largest excess at 1 m/s², m·g."""
+    return float(np.max(np.abs(_stale_excess(1.0))))
+
+
+def ch9_contact_steps() -> float:
+    """Steps on which the box touches the platform after it starts falling."""
+    r = stale_run()
+    return float(np.count_nonzero((r[:, 0] > DROP_START) & (r[:, 2] != 0.0)))
+
+
+def ch9_fresh_error() -> float:
+    """Largest |arbiter sum − reverse integration| on the steps that are not re-made contacts,
+    in units of m·g."""
+    r = stale_run()
+    return float(np.max(np.abs(_stale_excess()[r[:, 3] == 0.0])))
+
+
+def ch9_excess_vs_two_back() -> float:
+    """Largest |excess − the arbiter sum two steps earlier| on re-made contacts, m·g."""
+    r = stale_run()
+    idx = np.nonzero(r[:, 3] == 1.0)[0]
+    excess = _stale_excess()
+    return float(np.max(np.abs(excess[idx] - r[idx - 2, 2] / (10.0 * G))))
+
+
+def ch9_weight_share() -> float:
+    """(g − a)/g: the share of its weight the falling platform carries on average."""
+    return (G - DROP_ACCELERATION) / G
+
+
 NUMBERS: dict[str, Callable[[], float]] = {
     f.__name__: f
     for f in (
@@ -1351,6 +1561,23 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch7_bumps_per_second,
         ch7_fd_own_120,
         ch7_substeps_30,
+        ch8_idle_frames_144,
+        ch8_hitch_steps,
+        ch8_apex_60,
+        ch8_apex_144,
+        ch8_apex_exact,
+        ch8_apex_first_order_60,
+        ch8_hover_limit_hitch,
+        ch8_hover_overshoot_20,
+        ch8_hover_overshoot_120,
+        ch9_max_excess,
+        ch9_stale_steps,
+        ch9_stale_steps_1,
+        ch9_max_excess_1,
+        ch9_contact_steps,
+        ch9_fresh_error,
+        ch9_excess_vs_two_back,
+        ch9_weight_share,
     )
 }
 """Every number the chapters quote, by the name their markers use."""
@@ -1610,6 +1837,77 @@ def fig_ch7(path: Path) -> Path:
     return _save(fig, path)
 
 
+def fig_ch8(path: Path) -> Path:
+    """Steps per frame of the accumulator; the jump stepped at display rates; the hover's dt."""
+    fig, (a, b, c) = _axes(3, height=2.7)
+    frames = np.arange(1, CH8_FRAMES + 1)
+    for i, hz in enumerate(CH8_DISPLAYS):
+        n = steps_per_frame([1.0 / hz] * CH8_FRAMES, DT)
+        a.step(frames, np.array(n) + 0.06 * i, where="mid", label=f"{hz:g} Hz display")
+    hitch = [1.0 / 60.0] * CH8_FRAMES
+    hitch[CH8_FRAMES // 2] = CH8_HITCH
+    a.step(
+        frames, np.array(steps_per_frame(hitch, DT)) - 0.06, where="mid",
+        ls="--", label=f"60 Hz display, one {1000 * CH8_HITCH:.0f} ms hitch",
+    )  # fmt: skip
+    a.set_xlabel("frame")
+    a.set_ylabel("physics steps run")
+    a.set_title("fixed step dt = 1/120 s: the accumulator runs whole steps, whatever the display")
+    a.legend(fontsize=8)
+    rates = np.array(CH8_RATES)
+    b.plot(rates, [100 * jump_apex(1.0 / r) for r in rates], "o-", label="simulated apex")
+    b.axhline(ch8_apex_exact(), color="k", ls="--", lw=1, label="v²/2g (continuous)")
+    b.set_xscale("log")
+    b.set_xticks(rates, [f"{r:g}" for r in rates])
+    b.minorticks_off()
+    b.set_xlabel("physics rate 1/dt (Hz) — what a game stepping at its display rate would get")
+    b.set_ylabel("jump height (cm)")
+    b.set_title("the same jump, stepped at different rates")
+    b.legend(fontsize=8)
+    for dt, color in ((1.0 / 20.0, "C3"), (1.0 / 60.0, "C1"), (DT, "C0")):
+        h = hover_dt_run(dt)
+        c.plot(h[:, 0], 1000 * h[:, 1], ".-", color=color, ms=4, label=f"dt = 1/{round(1 / dt)} s")
+    c.plot(
+        hover_run(1.0)[:, 0], 1000 * hover_theory(1.0, hover_run(1.0)[:, 0]), "k--", lw=1,
+        label="continuous",
+    )  # fmt: skip
+    c.set_xlabel("time (s)")
+    c.set_ylabel("height − ride height (mm)")
+    c.set_title("the 5 Hz, ζ = 1 hover released 5 mm low, at three steps")
+    c.legend(fontsize=8)
+    return _save(fig, path)
+
+
+def fig_ch9(path: Path) -> Path:
+    """The arbiter sum against reverse integration on a falling platform; the stale excess."""
+    r = stale_run()
+    mg = 10.0 * G
+    fig, (a, b) = _axes(2, height=3.0)
+    a.plot(r[:, 0], r[:, 2] / mg, "k.-", lw=0.8, ms=5, label="Σ Arbiter.total_impulse / h")
+    a.plot(r[:, 0], r[:, 1] / mg, "o", ms=6, mfc="none", color="C0", label="reverse integration")
+    stale = r[:, 3] == 1.0
+    a.plot(r[stale, 0], r[stale, 2] / mg, "v", color="C3", ms=8, label="contact re-made (stale)")
+    a.axhline(ch9_weight_share(), color="C2", ls="--", lw=1, label="(g − a)/g, the mean")
+    a.set_xlim(DROP_START - 0.1, r[-1, 0])
+    a.set_xlabel("time (s)")
+    a.set_ylabel("vertical contact force / m·g")
+    a.set_title(
+        f"a box on a platform falling at {DROP_ACCELERATION:g} m/s² from t = {DROP_START:g} s"
+    )
+    a.legend(fontsize=8, ncol=2, loc="upper left")
+    excess = _stale_excess()
+    idx = np.nonzero(stale)[0]
+    two_back = r[idx - 2, 2] / mg
+    b.plot(two_back, excess[idx], "v", color="C3", ms=8, label="re-made contacts")
+    top = float(max(np.max(two_back), np.max(excess[idx]))) * 1.1
+    b.plot([0.0, top], [0.0, top], "k--", lw=1, label="excess = the sum two steps earlier")
+    b.set_xlabel("arbiter sum two steps earlier / m·g")
+    b.set_ylabel("arbiter sum − applied / m·g")
+    b.set_title("the excess is the old contact's impulse, reported again")
+    b.legend(fontsize=8)
+    return _save(fig, path)
+
+
 FIGURES: dict[str, Callable[[Path], Path]] = {
     "01-kinematic-vs-force-driven.png": fig_ch1,
     "02-reverse-integration.png": fig_ch2,
@@ -1618,6 +1916,8 @@ FIGURES: dict[str, Callable[[Path], Path]] = {
     "05-floating-capsule.png": fig_ch5,
     "06-playing-with-gravity.png": fig_ch6,
     "07-accuracy-costs.png": fig_ch7,
+    "08-fixed-step.png": fig_ch8,
+    "09-contact-impulses.png": fig_ch9,
 }
 """Every chapter figure, by file name."""
 
