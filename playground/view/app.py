@@ -436,7 +436,7 @@ class App:
         self._sample()
 
     def _sample(self) -> None:
-        p = self.session.show.player
+        p = self.scope.name or None
         if p is None or self.world.steps == self._scope_steps:
             return
         try:
@@ -526,7 +526,7 @@ class App:
                 stage_costs=self._costs.means,
                 notes=notes,
             ),
-            self.scope if show.player is not None else None,
+            self.scope if self.scope.name else None,
         )
         right = self.size[0] - 8
         panel = self.painter.draw_panel(surf, self.small, (right, 8))
@@ -615,9 +615,12 @@ def _overlay_hint(show: Show, current: Overlay) -> Overlay:
 
 
 def _scope_body(show: Show) -> dict[str, Any]:
-    """The scope's body (the player) and its weight m·g (N; g₀ where it feels no gravity)."""
-    p = show.player
-    if p is None or p not in show.world.names:
+    """The scope's body (the player; else the body the camera follows; else the first tracked
+    body) and its weight m·g (N; g₀ where it feels no gravity)."""
+    world = show.world
+    tracked = [n for n in (world.name_of(b) for b in world.solver.bodies) if n is not None]
+    name = next((n for n in (show.player, show.follow, *tracked) if n in tracked), None)
+    if name is None:
         return {}
-    g = math.hypot(*show.world.gravity_at(p))
-    return {"name": p, "weight": show.world.body(p).mass * (g if g > 0.0 else G0)}
+    g = math.hypot(*world.gravity_at(name))
+    return {"name": name, "weight": world.body(name).mass * (g if g > 0.0 else G0)}

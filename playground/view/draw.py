@@ -32,6 +32,7 @@ __all__ = [
     "capsule_outline",
     "draw_arrow",
     "draw_grid",
+    "draw_grip",
     "draw_legend",
     "draw_world",
     "outlined_polygon",
@@ -65,7 +66,7 @@ COLOURS: dict[str, Colour] = {
     "contact": (255, 230, 60),
     "normal": (255, 255, 140),
     "friction": (255, 120, 40),
-    "joint_force": (170, 255, 170),
+    "joint_force": (190, 255, 60),
     "support": (110, 210, 120),
     "support_filtered": (255, 60, 200),
     "gravity": (90, 150, 255),
@@ -242,14 +243,16 @@ def _zigzag(surf: pygame.Surface, colour: Colour, a: Vec, b: Vec, turns: int = 8
     pygame.draw.aalines(surf, colour, False, pts)
 
 
-def _draw_grip(surf: pygame.Surface, cam: Camera, grip: Grip) -> None:
-    """The arm from the top of the capsule to where the hand holds, and the hand."""
+def draw_grip(surf: pygame.Surface, cam: Camera, grip: Grip) -> Vec:
+    """The arm from the top of the capsule to where the hand holds, and the hand; returns where
+    the hand is on screen (px)."""
     j = grip.joint
     held = j.b.local_to_world(getattr(j, "anchor_b", pymunk.Vec2d(0.0, 0.0)))
     hand = _clamp(cam.to_screen((held.x, held.y)))
     shoulder = _clamp(cam.to_screen(grip.shoulder))
     pygame.draw.line(surf, COLOURS["hand"], shoulder, hand, 4)
     pygame.draw.circle(surf, COLOURS["hand"], hand, HAND_PX)
+    return hand
 
 
 def draw_world(
@@ -260,8 +263,8 @@ def draw_world(
     roles: Mapping[str, str] | None = None,
     grips: Iterable[Grip] = (),
 ) -> None:
-    """Draw every shape of the world (actors by ``roles``: body name → role) and every joint;
-    the controllers' ``grips`` as an arm and a hand."""
+    """Draw every shape of the world (actors by ``roles``: body name → role) and every joint
+    except the controllers' ``grips`` (see :func:`draw_grip`)."""
     by_id = {world.body(n).id: r for n, r in (roles or {}).items() if n in world.names}
     for shape in world.space.shapes:
         body = shape.body
@@ -269,13 +272,10 @@ def draw_world(
             continue
         sleeping = body.body_type == pymunk.Body.DYNAMIC and body.is_sleeping
         _draw_shape(surf, cam, shape, _body_colour(body, by_id), sleeping)
-    gripping = [g for g in grips]
-    grip_joints = {id(g.joint) for g in gripping}
+    grip_joints = {id(g.joint) for g in grips}
     for c in world.space.constraints:
         if id(c) not in grip_joints:
             _draw_joint(surf, cam, c)
-    for g in gripping:
-        _draw_grip(surf, cam, g)
 
 
 def draw_arrow(surf: pygame.Surface, colour: Colour, start: Vec, d: Vec, width: int) -> None:

@@ -35,6 +35,7 @@ from playground.view.draw import (
     Grip,
     LegendEntry,
     draw_arrow,
+    draw_grip,
     draw_legend,
     draw_world,
 )
@@ -120,6 +121,11 @@ class Painter:
         self.scale_px = 0.0
         self.scale_body: str | None = None
         self.scale_newtons = 0.0
+        self.compass_rect: pygame.Rect | None = None
+        """Where the compass was drawn last frame (None: not drawn)."""
+        self.compass_centre: Vec = (0.0, 0.0)
+        self.nullify_px = 0.0
+        """Radius of the nullify ring drawn last frame, px (0: none)."""
 
     def sample(self, world: World) -> None:
         """Call after every physics step (feeds the peak hold)."""
@@ -141,10 +147,10 @@ class Painter:
         """Draw the world and the overlays. ``focus``: the body whose weight scale the legend
         shows; ``nullify_target``: the body X would nullify now (None: X would do nothing)."""
         self.drawn = set()
+        self.compass_rect = None
+        self.nullify_px = 0.0
         grips = [g for g in (_grip(c) for c in controllers.values()) if g is not None]
         draw_world(surf, cam, world, roles=roles, grips=grips)
-        if grips:
-            self.drawn.add("grip_arm")
         ov = self.overlay
         arrows: list[ScreenArrow] = []
         peaks = self.hold.peaks()
@@ -176,11 +182,16 @@ class Painter:
             end = (a.start[0] + a.d[0], a.start[1] + a.d[1])
             if window.clipline(a.start, end):
                 self.drawn.add(a.kind)
+        # The hands last: what holds on must never hide under the arrows it explains.
+        for g in grips:
+            if window.collidepoint(draw_grip(surf, cam, g)):
+                self.drawn.add("grip_arm")
         if nullify_target is not None and nullify_target in world.names:
             t = world.body(nullify_target).position
             ring = max(cam.pixels(NULLIFY_RING_M), NULLIFY_RING_MIN_PX)
             centre = cam.to_screen((t.x, t.y))
             pygame.draw.circle(surf, COLOURS["nullify"], centre, ring, 3)
+            self.nullify_px = ring
             if window.inflate(2 * ring, 2 * ring).collidepoint(centre):
                 self.drawn.add("nullify")
 
@@ -247,9 +258,9 @@ class Painter:
                 return
             j = arb.total_impulse
             n = arb.normal
-            # The body's own shape is the arbiter's first: the impulse on it is −J (J acts on
-            # the second shape along the normal, which points from the first to the second).
-            fx, fy = -j.x / h, -j.y / h
+            # Walking a body's arbiters, pymunk puts the body's own shape first and gives the
+            # impulse that shape received (a crate resting on a floor reads +m·g·h upward).
+            fx, fy = j.x / h, j.y / h
             fn = fx * n.x + fy * n.y
             found.append((pts, (fn * n.x, fn * n.y), (fx - fn * n.x, fy - fn * n.y)))
 
@@ -411,6 +422,7 @@ class Painter:
         panel.fill((0, 0, 0, 190))
         surf.blit(panel, rect.topleft)
         c = (rect.centerx, rect.y + 8 + r)
+        self.compass_rect, self.compass_centre = rect, (float(c[0]), float(c[1]))
         pygame.draw.circle(surf, COLOURS["dim"], c, r, 1)
         sx, sy = cam.vector((0.0, 1.0))
         k = (r - 2) / math.hypot(sx, sy)

@@ -1,0 +1,309 @@
+"""Each shipped level visibly shows its claim: the level is rendered off screen at its ``[view]``
+moment with its own view hints (zoom, roll, overlays), and the claimed thing is found by its
+colour where it must be — the friction arrow along the incline, the grip between hand and whale,
+the hover's reaction pushing the seesaw's plank down, the outward perceived gravity in the ring,
+the nullify marker on the enemy, world up turned over on the compass after a gravity flip."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import numpy as np
+import pygame
+import pytest
+from numpy.typing import NDArray
+
+from playground.view import App
+from playground.view.arrows import arrow_length, body_size, weight_pixels
+from playground.view.draw import COLOURS
+from playground.view.launcher import init_headless, level_names, show_level
+
+SIZE = (960, 540)
+FRAME = 1.0 / 60.0  # s: one headless frame
+COLOUR_TOL = 10  # per channel: anti-aliased edges blend; an arrow's body is its exact colour
+MIN_PIXELS = 20  # pixels of a colour that make a drawn thing (an arrow 2 px wide and 10 px long)
+BAND_PX = 14.0  # px: half-width of the strip along which an arrow is looked for
+TOL_DIR_RAD = math.radians(12.0)  # a drawn direction within this of the claimed one
+RING_TOL_PX = 5.0  # px: the ring is 3 px wide inward from its radius; its centre is rounded
+# to whole pixels and its edge pixels spread by one more
+LEVELS = level_names()
+
+Vec = tuple[float, float]
+
+
+@pytest.fixture(scope="module", autouse=True)
+def headless() -> Iterator[None]:
+    init_headless()
+    yield
+
+
+def at_moment(level: str, t: float | None = None) -> App:
+    """The level rendered at ``t`` (default: its ``[view]`` moment) with its own view hints."""
+    app = App(show_level, level, levels=LEVELS, size=SIZE)
+    moment = app.session.show.scene.level.view.moment if t is None else t
+    assert moment is not None, f"{level}: its [view] table names no moment"
+    app.run_frames(round(moment / FRAME))
+    app.render()
+    return app
+
+
+def mask(app: App, kind: str) -> NDArray[np.bool_]:
+    """Pixels of ``COLOURS[kind]`` outside the HUD panels (x, y indexing)."""
+    arr = pygame.surfarray.array3d(app.surface).astype(int)
+    hit = np.abs(arr - np.array(COLOURS[kind])).max(axis=2) <= COLOUR_TOL
+    for r in app.hud.rects:
+        hit[r.left : r.right, r.top : r.bottom] = False
+    return hit
+
+
+def in_rect(app: App, kind: str, rect: pygame.Rect) -> NDArray[np.bool_]:
+    """Pixels of ``COLOURS[kind]`` inside ``rect`` only (a HUD panel, for instance)."""
+    arr = pygame.surfarray.array3d(app.surface).astype(int)
+    hit = np.abs(arr - np.array(COLOURS[kind])).max(axis=2) <= COLOUR_TOL
+    out = np.zeros_like(hit)
+    out[rect.left : rect.right, rect.top : rect.bottom] = hit[
+        rect.left : rect.right, rect.top : rect.bottom
+    ]
+    return out
+
+
+def reach(hit: NDArray[np.bool_], origin: Vec, direction: Vec) -> float:
+    """How far (px) pixels of ``hit`` reach from ``origin`` along ``direction`` (screen), within
+    BAND_PX of that ray; 0 if none."""
+    n = math.hypot(*direction)
+    ux, uy = direction[0] / n, direction[1] / n
+    xs, ys = np.nonzero(hit)
+    dx, dy = xs - origin[0], ys - origin[1]
+    along = dx * ux + dy * uy
+    across = np.abs(dx * uy - dy * ux)
+    sel = (across <= BAND_PX) & (along > 0.0)
+    return float(along[sel].max()) if sel.any() else 0.0
+
+
+def screen(app: App, name: str) -> Vec:
+    b = app.world.body(name)
+    c = b.local_to_world(b.center_of_gravity)
+    return app.camera.to_screen((c.x, c.y))
+
+
+def weight_px(app: App, name: str) -> float:
+    return weight_pixels(body_size(app.world.body(name)), app.camera.zoom)
+
+
+def direction_of(hit: NDArray[np.bool_]) -> float:
+    """The main direction (rad, screen, 0..π) of the pixels of ``hit`` (their principal axis)."""
+    xs, ys = np.nonzero(hit)
+    pts = np.column_stack([xs - xs.mean(), ys - ys.mean()]).astype(float)
+    _, vecs = np.linalg.eigh(pts.T @ pts)
+    vx, vy = vecs[:, -1]
+    return math.atan2(vy, vx) % math.pi
+
+
+def angle_between(a: float, b: float) -> float:
+    """Unsigned difference of two undirected angles (rad, modulo π)."""
+    d = abs(a - b) % math.pi
+    return min(d, math.pi - d)
+
+
+def compass_up(app: App) -> Vec:
+    """The screen direction in which the compass's world-up arrow points (from its centre)."""
+    rect = app.painter.compass_rect
+    assert rect is not None, "no compass on screen"
+    hit = in_rect(app, "up", rect)
+    xs, ys = np.nonzero(hit)
+    assert xs.size >= MIN_PIXELS
+    cx, cy = app.painter.compass_centre
+    far = np.argmax((xs - cx) ** 2 + (ys - cy) ** 2)
+    return (float(xs[far] - cx), float(ys[far] - cy))
+
+
+def test_every_level_has_a_moment() -> None:
+    """Every shipped level names the moment that shows its claim (its screenshot and its test)."""
+    for level in LEVELS:
+        assert show_level(level).scene.level.view.moment is not None, level
+
+
+# -- one test per level --------------------------------------------------------------------------
+
+
+def test_bounce_draws_a_one_step_bounce_spike() -> None:
+    """bounce: the frame holding ball4's first bounce (one physics step, an odd one, not the
+    frame's last) shows its support arrow several weights long, straight up."""
+    app = at_moment("bounce")
+    ball = "ball4"
+    assert app.world.steps % 2 == 0 and math.hypot(*app.world.forces(ball).support) < 1.0
+    w = weight_px(app, ball)
+    up = reach(mask(app, "support"), screen(app, ball), (0.0, -1.0))
+    m = app.world.body(ball).mass
+    assert up >= arrow_length(3.0 * m * 9.81, m, w), (up, w)
+
+
+def test_crusher_shows_the_crate_on_the_player() -> None:
+    """crusher: the player reports being crushed and the contact overlay draws the crate's load
+    on its head: a normal force pointing down from the top of the capsule, over a weight long."""
+    app = at_moment("crusher")
+    ctrl = app.session.show.controllers["player"]
+    assert ctrl.state.value == "crushed"
+    p = app.world.body("player").position
+    head = app.camera.to_screen((p.x, p.y + ctrl.config.half_length))
+    down = reach(mask(app, "normal"), head, (0.0, 1.0))
+    assert down >= weight_px(app, "player"), down
+
+
+def test_elevator_support_grows_above_the_weight() -> None:
+    """elevator: accelerating up, the filtered support arrow is longer than the weight arrow by
+    about (g + a)/g = 1.2."""
+    app = at_moment("elevator")
+    c = screen(app, "player")
+    up = reach(mask(app, "support_filtered"), c, (0.0, -1.0))
+    down = reach(mask(app, "gravity"), c, (0.0, 1.0))
+    assert down > 0.0 and up / down >= 1.1, (up, down)
+
+
+def test_flying_whale_draws_the_grip_between_hand_and_whale() -> None:
+    """flying_whale: hanging, the hand and arm fill the gap between the top of the capsule and
+    the whale's underside, and the joint force is drawn there pointing up."""
+    app = at_moment("flying_whale")
+    ctrl = app.session.show.controllers["player"]
+    assert ctrl.joint is not None
+    p = app.world.body("player").position
+    top = app.camera.to_screen((p.x, p.y + ctrl.config.half_length + ctrl.config.radius))
+    whale = app.world.body("whale")
+    bottom = max(
+        app.camera.to_screen((v.x, v.y))[1]
+        for s in whale.shapes
+        for v in (whale.local_to_world(u) for u in s.get_vertices())  # type: ignore[attr-defined]
+    )
+    hand = mask(app, "hand")
+    gap = hand[int(top[0]) - 6 : int(top[0]) + 7, int(bottom) + 1 : int(top[1])]
+    assert gap.shape[1] > 0 and gap.any(axis=0).mean() >= 0.8, "the gap is not bridged"
+    assert reach(mask(app, "joint_force"), (top[0], bottom), (0.0, -1.0)) > 10.0
+
+
+def test_gravity_flip_shows_world_up_turned_over() -> None:
+    """gravity_flip: standing on the old ceiling, the camera has rolled over, the compass shows
+    world up pointing down the screen, and the support points up the screen."""
+    app = at_moment("gravity_flip")
+    ux, uy = compass_up(app)
+    assert math.atan2(ux, uy) == pytest.approx(0.0, abs=TOL_DIR_RAD * 2)
+    c = screen(app, "player")
+    assert reach(mask(app, "support_filtered"), c, (0.0, -1.0)) >= 0.8 * weight_px(app, "player")
+
+
+def test_gravity_leap_shows_the_player_on_the_creatures_underside() -> None:
+    """gravity_leap: landed on the creature's underside, the player stands upright on screen
+    (support up), while the compass shows world up more than 120° away from screen up."""
+    app = at_moment("gravity_leap")
+    assert app.session.show.controllers["player"].state.value == "grounded"
+    ux, uy = compass_up(app)
+    assert abs(math.atan2(ux, -uy)) >= math.radians(120.0)
+    c = screen(app, "player")
+    assert reach(mask(app, "support_filtered"), c, (0.0, -1.0)) >= 0.8 * weight_px(app, "player")
+
+
+def test_incline_draws_friction_along_the_slope() -> None:
+    """incline: the contact overlay draws a friction arrow along the 30° slope and a normal
+    arrow square to it."""
+    app = at_moment("incline")
+    friction, normal = mask(app, "friction"), mask(app, "normal")
+    assert friction.sum() >= MIN_PIXELS and normal.sum() >= MIN_PIXELS
+    slope = math.radians(-30.0) % math.pi  # screen y points down: the slope rises to the right
+    assert angle_between(direction_of(friction), slope) <= TOL_DIR_RAD
+    assert angle_between(direction_of(normal), slope + math.pi / 2) <= TOL_DIR_RAD
+
+
+def test_moving_platform_draws_the_drive_carrying_the_player() -> None:
+    """moving_platform: while the platform speeds up to the right, the drive arrow at the
+    player's feet points right."""
+    app = at_moment("moving_platform")
+    probe = app.session.show.controllers["player"].probe
+    assert probe is not None
+    at = app.camera.to_screen(probe.point)
+    drive = mask(app, "drive")
+    assert reach(drive, at, (1.0, 0.0)) >= 8.0 and reach(drive, at, (-1.0, 0.0)) <= 3.0
+
+
+def test_null_enemy_marks_the_enemy_until_nullified() -> None:
+    """null_enemy: before t = 1 s the ring marks the enemy X would nullify; once its gravity is
+    nullified X would do nothing more, so the ring is gone (and so is its weight arrow)."""
+    app = at_moment("null_enemy")
+    ring = mask(app, "nullify")
+    e = screen(app, "enemy")
+    r = app.painter.nullify_px
+    xs, ys = np.nonzero(ring)
+    assert xs.size >= MIN_PIXELS
+    # A ring around the enemy: nearly all its pixels at the ring's radius from the enemy, on
+    # both sides of it.
+    d = np.hypot(xs - e[0], ys - e[1])
+    assert np.mean(np.abs(d - r) <= RING_TOL_PX) >= 0.95
+    assert xs.min() < e[0] - 0.8 * r and xs.max() > e[0] + 0.8 * r
+    later = at_moment("null_enemy", 2.0)
+    assert later.world.gravity_rule("enemy").scale == 0.0
+    assert not mask(later, "nullify").any()
+    assert "nullify" not in {e.kind for e in later.painter.legend()}
+
+
+def test_planet_keeps_the_walker_upright_as_world_up_turns() -> None:
+    """planet: the walker has gone round part of the planet; the camera rolls with it, so its
+    weight points down the screen while the compass shows world up turned by the roll."""
+    app = at_moment("planet")
+    roll = app.camera.roll
+    assert abs(roll) >= math.radians(15.0)
+    ux, uy = compass_up(app)
+    expected = app.camera.vector((0.0, 1.0))
+    got = math.atan2(uy, ux)
+    assert abs(math.remainder(got - math.atan2(expected[1], expected[0]), math.tau)) <= TOL_DIR_RAD
+    c = screen(app, "player")
+    assert reach(mask(app, "gravity"), c, (0.0, 1.0)) >= 0.8 * weight_px(app, "player")
+
+
+def test_rest_support_balances_the_weight() -> None:
+    """rest: the filtered support arrow up is as long as the weight arrow down (one weight)."""
+    app = at_moment("rest")
+    c = screen(app, "player")
+    w = weight_px(app, "player")
+    up = reach(mask(app, "support_filtered"), c, (0.0, -1.0))
+    down = reach(mask(app, "gravity"), c, (0.0, 1.0))
+    assert up == pytest.approx(w, rel=0.1) and down == pytest.approx(w, rel=0.1)
+
+
+def test_rotating_room_rolls_the_camera_with_gravity() -> None:
+    """rotating_room: after the field turned by 0.5 rad the camera has rolled with the player's
+    up (the compass shows it), and its weight still points down the screen."""
+    app = at_moment("rotating_room")
+    assert abs(app.camera.roll) == pytest.approx(0.5, abs=0.1)
+    compass_up(app)
+    c = screen(app, "player")
+    assert reach(mask(app, "gravity"), c, (0.0, 1.0)) >= 0.8 * weight_px(app, "player")
+
+
+def test_sandbox_draws_every_kind_of_body() -> None:
+    """sandbox: the player, the enemy, the kinematic platform, dynamic bodies and the seesaw's
+    pivot are each drawn in their own colour."""
+    app = at_moment("sandbox")
+    app.camera.zoom_by(0.5)
+    app.render()
+    for kind in ("player", "enemy", "kinematic", "dynamic", "joint"):
+        assert mask(app, kind).sum() >= MIN_PIXELS / 4, kind
+
+
+def test_seesaw_draws_the_hover_reaction_on_the_plank() -> None:
+    """seesaw: the reaction overlay draws the hover's push on the plank, at the probe's hit
+    point, pointing down, at least half a weight long."""
+    app = at_moment("seesaw")
+    probe = app.session.show.controllers["player"].probe
+    assert probe is not None and probe.body is app.world.body("plank")
+    at = app.camera.to_screen(probe.point)
+    assert reach(mask(app, "reaction"), at, (0.0, 1.0)) >= 0.5 * weight_px(app, "player")
+
+
+def test_spinning_ring_draws_perceived_gravity_outward() -> None:
+    """spinning_ring: the perceived gravity arrow points away from the ring's centre."""
+    app = at_moment("spinning_ring")
+    c = screen(app, "player")
+    o = screen(app, "ring")
+    out = (c[0] - o[0], c[1] - o[1])
+    hit = mask(app, "perceived")
+    assert reach(hit, c, out) >= 0.8 * weight_px(app, "player")
+    assert reach(hit, c, (-out[0], -out[1])) <= 3.0
