@@ -24,7 +24,7 @@ from playground.view.launcher import init_headless, play
 
 SIZE = (640, 360)
 TOL_ROUNDTRIP_M = 1e-9  # m: screen ↔ world round trip, double rounding over a few operations
-COLOUR_TOL = 12  # per channel: anti-aliasing-free draws are exact; allow blending with panels
+COLOUR_TOL = 12  # per channel: an arrow's body is its exact colour; allow blending with panels
 NEAR_PX = 80  # px: "near the body" for colour checks
 
 
