@@ -369,6 +369,22 @@ class World:
             known = ", ".join(sorted(self._bodies)) or "none"
             raise KeyError(f"no body named {name!r} (known: {known})") from None
 
+    def body_at(self, point: Vec, radius: float = 0.0) -> str | None:
+        """The named body with a shape at world ``point`` (m) or within ``radius`` (m) of it (the
+        nearest if several), or None (unnamed bodies such as static ground do not count).
+
+        >>> world = World()
+        >>> _ = world.add_box("crate", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+        >>> world.body_at((0.2, 0.7)), world.body_at((2.0, 0.5)), world.body_at((0.6, 0.5), 0.2)
+        ('crate', None, 'crate')
+        """
+        bounded_vec("point", point, MAX_COORDINATE, "m")
+        finite("radius", radius)
+        info = self.space.point_query_nearest(point, max(radius, 0.0), pymunk.ShapeFilter())
+        if info is None or info.shape is None or info.shape.body is None:
+            return None
+        return self._names.get(info.shape.body.id)
+
     def name_of(self, body: pymunk.Body) -> str | None:
         return self._names.get(body.id)
 
@@ -516,6 +532,18 @@ class World:
             bounded_vec("point", point, MAX_COORDINATE, "m")
         if b.body_type == pymunk.Body.DYNAMIC:
             self.ledger.add(b, force, point=point, category=category)
+            self._plan_dirty = True
+
+    def apply_torque(
+        self, body: pymunk.Body | str, torque: float, *, category: Category = Category.APPLIED
+    ) -> None:
+        """Apply a pure ``torque`` (N·m, counter-clockwise) during the coming step."""
+        b = self._own(body)
+        # A torque is a force times a lever of at most the world's size: the same runaway bound.
+        limit = RUNAWAY_FORCE * MAX_COORDINATE if self._config.guard else math.inf
+        bounded("torque", torque, limit, "N·m")
+        if b.body_type == pymunk.Body.DYNAMIC:
+            self.ledger.add_torque(b, torque, category)
             self._plan_dirty = True
 
     def apply_impulse(

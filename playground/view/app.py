@@ -25,13 +25,16 @@ from pathlib import Path
 from typing import Any
 
 import pygame
+import pymunk
 
+from playground.forces import Category
 from playground.intents import Intent, IntentSource
-from playground.view.arrows import G0
+from playground.view.arrows import G0, MIN_ARROW_PX, arrow_length, body_size, weight_pixels
 from playground.view.camera import Camera
 from playground.view.capture import save_picture
-from playground.view.draw import COLOURS, draw_grid
+from playground.view.draw import COLOURS, draw_arrow, draw_grid
 from playground.view.hud import Hud, HudInfo, StageCosts
+from playground.view.mouse import Grab, MouseSpring
 from playground.view.overlay import OVERLAY_KEYS, Overlay, Painter, nearest, roles_of
 from playground.view.replay import Recorder, Replay
 from playground.view.scope import Scope
@@ -53,6 +56,9 @@ MAX_STEPS_PER_FRAME = 32  # physics steps run at most per frame; beyond that the
 SPEEDS = (0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0)  # slow motion … fast forward, × real time
 HEADLESS_FRAME = 1.0 / 60.0  # s of wall time a headless frame stands for
 ZOOM_STEP = 1.25  # zoom factor per key press or wheel notch
+DRAG_START_PX = 4.0  # px: a press that moves farther than this drags; otherwise it is a click
+PICK_PX = 6.0  # px: a click this close to a body's outline picks it
+MOUSE_COLOUR = COLOURS["mouse"]
 MAX_FPS = 240  # Hz: drawing is capped here when the display does not sync to its refresh
 
 
@@ -218,6 +224,12 @@ class Session:
         self.recorder: Recorder | None = None
         self.current = Intent()
         self.script: IntentSource | None = None
+        self.grab: Grab | None = None
+        """What the mouse holds now (None: nothing); pulled toward in every step's CONTROL stage."""
+        self.spring = MouseSpring()
+        self.pull: tuple[Vec, Vec] | None = None
+        """The last step's mouse force (N) and the world point it acted at (m), or None."""
+        show.world.on(Stage.CONTROL, self.pull_hook)
         player = show.player
         if player is not None and player in show.controllers:
             self.recorder = Recorder(level=show.name, dt=show.world.config.dt, actor=player)
@@ -266,6 +278,23 @@ class Session:
         self.current = intent
         self.player.intent = intent
         self.recorder.record(world.steps, intent)
+
+    def pull_hook(self, world: World) -> None:
+        """CONTROL stage: the mouse spring's force on the grabbed body, into the ledger as an
+        APPLIED force at the grabbed point (see :mod:`playground.view.mouse`)."""
+        grab = self.grab
+        if grab is None or grab.body not in world.names:
+            self.pull = None
+            return
+        body = world.body(grab.body)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            self.pull = None
+            return
+        pull = self.spring.pull(body, grab.anchor, grab.target, world.config.dt)
+        world.apply_force(body, pull.force, point=pull.point, category=Category.APPLIED)
+        if pull.torque != 0.0:
+            world.apply_torque(body, pull.torque, category=Category.APPLIED)
+        self.pull = (pull.force, pull.point)
 
     def intent(self, t: float) -> Intent:
         """The player's intent source (replaces a level's script): this step's intent."""
@@ -321,6 +350,10 @@ class App:
         self._costs = StageCosts()
         self._replay_in = replay
         self.finished: list[Replay] = []
+        self.selected: str | None = None
+        """The body the HUD and the scope follow when picked with the mouse (None: the player)."""
+        self._press: tuple[Vec, str | None, Vec] | None = None  # screen px, body, anchor (m)
+        self._cursor: Vec | None = None  # screen px while dragging
         self.level = level
         self.start(level)
 
@@ -350,8 +383,15 @@ class App:
         )
         self.roll = show.roll
         self.painter = Painter(_overlay_hint(show, self.painter.overlay))
-        self.scope = Scope(seconds=4.0, dt=world.config.dt, **_scope_body(show))
+        self.scope = Scope(
+            seconds=4.0,
+            dt=world.config.dt,
+            **_scope_of(world, _scope_body(show)),
+        )
         self._scope_steps = -1
+        self.selected = None
+        self._press = None
+        self._cursor = None
         self._costs = StageCosts()
         self._follow(0.0)
 
@@ -373,6 +413,69 @@ class App:
             self.camera.zoom_by(ZOOM_STEP ** float(event.y))
         elif event.type == pygame.VIDEORESIZE:
             self.resize(event.size)
+        elif event.type == pygame.MOUSEBUTTONDOWN and event.button == pygame.BUTTON_LEFT:
+            self._mouse_down(event.pos)
+        elif event.type == pygame.MOUSEMOTION:
+            self._mouse_move(event.pos)
+        elif event.type == pygame.MOUSEBUTTONUP and event.button == pygame.BUTTON_LEFT:
+            self._mouse_up()
+
+    # -- mouse -----------------------------------------------------------------------------------
+
+    def _mouse_down(self, pos: Vec) -> None:
+        """A press picks the body under the cursor (and selects it); moving on drags it."""
+        at = self.camera.to_world(pos)
+        name = self.world.body_at(at, PICK_PX / self.camera.zoom)
+        anchor: Vec = (0.0, 0.0)
+        if name is not None:
+            local = self.world.body(name).world_to_local(at)
+            anchor = (local.x, local.y)
+        self._press = (pos, name, anchor)
+        self.select(name)
+
+    def _mouse_move(self, pos: Vec) -> None:
+        press = self._press
+        if press is None:
+            return
+        start, name, anchor = press
+        if self._cursor is None and math.dist(start, pos) <= DRAG_START_PX:
+            return
+        if name is None or self.world.body(name).body_type != pymunk.Body.DYNAMIC:
+            return
+        self._cursor = pos
+        self.session.grab = Grab(name, anchor, self.camera.to_world(pos))
+
+    def _mouse_up(self) -> None:
+        self._press = None
+        self._cursor = None
+        self.session.grab = None
+
+    def select(self, name: str | None) -> None:
+        """Make the HUD and the scope follow the dynamic body ``name`` (None or anything else:
+        the player). An untracked body is tracked from now on (tracking only reads)."""
+        if name is not None and (
+            name not in self.world.names or self.world.body(name).body_type != pymunk.Body.DYNAMIC
+        ):
+            name = None
+        if name is not None and self.world.solver.row_of(self.world.body(name)) is None:
+            self.world.track(name)
+        if name != self.selected:
+            self.selected = name
+            focus = self.focus
+            self.scope = Scope(
+                seconds=self.scope.seconds,
+                dt=self.world.config.dt,
+                **_scope_of(self.world, focus),
+            )
+            self._scope_steps = -1
+
+    @property
+    def focus(self) -> str | None:
+        """The body whose forces the HUD and the scope show: the selected body, or by default the
+        player (else the followed body, else the first tracked one)."""
+        if self.selected is not None and self.selected in self.world.names:
+            return self.selected
+        return _scope_body(self.session.show)
 
     def _key(self, key: int) -> None:
         kb = self.session.keyboard
@@ -452,6 +555,10 @@ class App:
         """Advance one frame of ``elapsed`` s of wall time: physics steps, then the camera.
         Returns the number of physics steps run."""
         n = 0 if self.paused else self.accumulator.advance(elapsed, self.speed)
+        grab = self.session.grab
+        if grab is not None and self._cursor is not None:
+            # The hand stays under the cursor while the camera follows something else.
+            self.session.grab = dataclasses.replace(grab, target=self.camera.to_world(self._cursor))
         for _ in range(n):
             self.step()
         self._follow(elapsed)
@@ -501,14 +608,18 @@ class App:
             world,
             show.controllers,
             roles_of(show),
-            focus=show.follow if show.follow in show.controllers else show.player,
+            focus=self.selected
+            if self.selected is not None
+            else (show.follow if show.follow in show.controllers else show.player),
             nullify_target=self.session.nearest_enemy(),
         )
+        self._draw_mouse(surf)
         ctrl = self.session.player
         state = getattr(getattr(ctrl, "state", None), "value", None)
         notes = ["H: controls"]
         if self.session.keyboard.flipped:
             notes.append("own gravity flipped (G restores)")
+        notes.extend(self._focus_notes())
         if self.session.playback is not None:
             notes.append("replaying")
         elif self.session.script is not None and not self.session.keyboard.touched:
@@ -540,6 +651,49 @@ class App:
         if self.show_help:
             self.hud.draw_help(surf, CONTROLS, show.description)
         return surf
+
+    def _draw_mouse(self, surf: pygame.Surface) -> None:
+        """The selected body's marker, and the mouse spring: a band from the grabbed point to the
+        cursor and its force arrow (the very force put in the ledger)."""
+        world, cam = self.world, self.camera
+        if self.selected is not None and self.selected in world.names:
+            body = world.body(self.selected)
+            c = body.local_to_world(body.center_of_gravity)
+            pygame.draw.circle(surf, MOUSE_COLOUR, cam.to_screen((c.x, c.y)), 5, 2)
+        grab, pull = self.session.grab, self.session.pull
+        if grab is None or grab.body not in world.names:
+            return
+        body = world.body(grab.body)
+        p = body.local_to_world(grab.anchor)
+        start = cam.to_screen((p.x, p.y))
+        pygame.draw.line(surf, MOUSE_COLOUR, start, cam.to_screen(grab.target), 1)
+        pygame.draw.circle(surf, MOUSE_COLOUR, start, 4)
+        n = math.hypot(*pull[0]) if pull is not None else 0.0
+        length = arrow_length(n, body.mass, weight_pixels(body_size(body), cam.zoom))
+        if pull is not None and math.isfinite(n) and length >= MIN_ARROW_PX:
+            sx, sy = cam.vector((pull[0][0] / n, pull[0][1] / n))
+            k = length / math.hypot(sx, sy)
+            draw_arrow(surf, MOUSE_COLOUR, cam.to_screen(pull[1]), (sx * k, sy * k), 3)
+            self.painter.drawn.add("mouse")
+
+    def _focus_notes(self) -> list[str]:
+        """HUD lines for the selected body: its name, support and applied forces, the mouse's."""
+        name = self.selected
+        if name is None or name not in self.world.names:
+            return []
+        try:
+            reading = self.world.forces(name)
+        except KeyError:
+            return []
+        lines = [
+            f"selected: {name} (click empty space: player)",
+            f"  support {math.hypot(*reading.support):7.1f} N   "
+            f"applied {math.hypot(*reading.applied):7.1f} N",
+        ]
+        pull = self.session.pull
+        if pull is not None and self.session.grab is not None:
+            lines.append(f"  mouse ({self.session.grab.body}) {math.hypot(*pull[0]):7.1f} N")
+        return lines
 
     def screenshot(self, path: Path) -> Path:
         """Save the current picture (type from the suffix: .png, .bmp, .tga, .jpg), whole or not
@@ -614,13 +768,17 @@ def _overlay_hint(show: Show, current: Overlay) -> Overlay:
     return Overlay.from_names(names) if names is not None else current
 
 
-def _scope_body(show: Show) -> dict[str, Any]:
-    """The scope's body (the player; else the body the camera follows; else the first tracked
-    body) and its weight m·g (N; g₀ where it feels no gravity)."""
+def _scope_body(show: Show) -> str | None:
+    """The scope's body unless one is selected: the player; else the body the camera follows;
+    else the first tracked body."""
     world = show.world
     tracked = [n for n in (world.name_of(b) for b in world.solver.bodies) if n is not None]
-    name = next((n for n in (show.player, show.follow, *tracked) if n in tracked), None)
-    if name is None:
+    return next((n for n in (show.player, show.follow, *tracked) if n in tracked), None)
+
+
+def _scope_of(world: World, name: str | None) -> dict[str, Any]:
+    """The scope's body and its weight m·g (N; g₀ where it feels no gravity)."""
+    if name is None or name not in world.names:
         return {}
     g = math.hypot(*world.gravity_at(name))
     return {"name": name, "weight": world.body(name).mass * (g if g > 0.0 else G0)}

@@ -360,6 +360,7 @@ class Painter:
             ("perceived", "perceived gravity", "line"),
             ("up", "perceived up (unit)", "line"),
             ("nullify", "X would nullify this body", "ring"),
+            ("mouse", "mouse pull (an applied force)", "line"),
         )
         entries = [
             LegendEntry("hand" if k == "grip_arm" else k, text, swatch)
