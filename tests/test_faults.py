@@ -183,3 +183,31 @@ def test_cli_faults_exits_2_on_an_unknown_name_listing_the_valid_ones(
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert named in err
+
+
+def test_every_break_is_declared_by_a_level() -> None:
+    """Each break is declared by at least one shipped level, so the green matrix shows each one
+    is real: it changes a reading or a trajectory that a check sees."""
+    declared = {b for p in shipped().values() for b in load(p).catches}
+    assert set(faults.names()) <= declared, set(faults.names()) - declared
+
+
+@pytest.mark.parametrize("name", [*SEED_SEQUENCES, *ROOMS])
+def test_seed_sequences_and_rooms_catch_two_breaks(name: str) -> None:
+    """The seed sequences and the artificial-gravity rooms each declare two breaks or more."""
+    assert len(load(find(name)).catches) >= MIN_CATCHES
+
+
+def test_the_readme_levels_table_lists_what_each_level_must_catch() -> None:
+    """The README's levels table shows each shipped level's declared breaks, as the file has
+    them."""
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text(encoding="utf-8")
+    rows = {
+        cells[1].strip("` "): cells[-2].strip()
+        for line in readme.splitlines()
+        if line.startswith("| `") and len(cells := line.split("|")) == 6
+    }
+    for name, path in shipped().items():
+        listed = rows[name]
+        catches = load(path).catches
+        assert listed == (", ".join(f"`{c}`" for c in catches) or "—"), name
