@@ -301,14 +301,16 @@ def cmd_play(args: argparse.Namespace) -> int:
 
 
 def cmd_figures(args: argparse.Namespace) -> int:
-    """Regenerate the teaching chapters' figures (docs/chapters) headless; needs matplotlib."""
+    """Regenerate the teaching chapters' figures (docs/chapters) headless; needs matplotlib and
+    tqdm (the ``bench`` extra)."""
     from playground.figures import make_all
 
     try:
         paths = make_all(Path(args.out), progress=not args.no_progress)
     except ImportError as exc:
         print(
-            f"playground figures: needs matplotlib: pip install 'pymunk-playground[bench]' ({exc})",
+            f"playground figures: needs matplotlib and tqdm: pip install 'pymunk-playground[bench]'"
+            f" ({exc})",
             file=sys.stderr,
         )
         return 2
