@@ -17,6 +17,7 @@ perceived gravity stay right. An enemy is the same controller with another inten
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 from dataclasses import dataclass, fields
@@ -277,15 +278,7 @@ class Controller:
         if not isinstance(config, ControllerConfig):
             raise ValueError(f"config: expected a ControllerConfig, got {config!r}")
         finite("angle", angle)
-        omega = TWO_PI * config.hover_frequency
-        limit = hover_limit(config.hover_damping)
-        if omega * world.config.dt >= limit:
-            raise ValueError(
-                f"hover_frequency: 2π·f·dt must stay below 2ζ + 2√(ζ² + 1) = {limit:.4g} "
-                f"(ζ = hover_damping = {config.hover_damping!r}) for a stable spring; with dt = "
-                f"{world.config.dt} s expected f < {limit / (TWO_PI * world.config.dt):.4g} Hz, "
-                f"got {config.hover_frequency!r}"
-            )
+        omega = _stable_hover(config, world.config.dt)
         self.world = world
         self.name = name
         self.config = config
@@ -345,6 +338,16 @@ class Controller:
         if source is not None:
             world.on(Stage.INPUTS, self._read_source)
         world.on(Stage.CONTROL, self._control)
+
+    def tune_hover(self, frequency: float, damping: float) -> None:
+        """Set the hover spring's frequency (Hz) and damping ratio from the next step on (a live
+        tuning panel). ValueError, naming the limit, if the spring would be unstable at the
+        world's dt."""
+        config = dataclasses.replace(self.config, hover_frequency=frequency, hover_damping=damping)
+        omega = _stable_hover(config, self.world.config.dt)
+        self.config = config
+        self._k = config.mass * omega * omega
+        self._c = 2.0 * config.hover_damping * config.mass * omega
 
     def remove(self) -> None:
         """Take the controller out of its world: its grip, body and shape go; its hooks stay
@@ -856,6 +859,20 @@ class Controller:
         if it.nullify is not None and it.nullify != self._nullify_wish:
             world.set_gravity_rule(it.nullify, GravityRule(scale=0.0))
         self._nullify_wish = it.nullify
+
+
+def _stable_hover(config: ControllerConfig, dt: float) -> float:
+    """The hover's 2π·f (rad/s), or ValueError if the spring would be unstable at ``dt`` (s)."""
+    omega = TWO_PI * config.hover_frequency
+    limit = hover_limit(config.hover_damping)
+    if omega * dt >= limit:
+        raise ValueError(
+            f"hover_frequency: 2π·f·dt must stay below 2ζ + 2√(ζ² + 1) = {limit:.4g} "
+            f"(ζ = hover_damping = {config.hover_damping!r}) for a stable spring; with dt = "
+            f"{dt} s expected f < {limit / (TWO_PI * dt):.4g} Hz, "
+            f"got {config.hover_frequency!r}"
+        )
+    return omega
 
 
 def hover_spring(

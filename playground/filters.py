@@ -377,6 +377,20 @@ class OneEuroFilter(_RowFilter):
 
     def __init__(self, min_cutoff: float = 1.0, beta: float = 0.0, d_cutoff: float = 1.0) -> None:
         super().__init__()
+        self.tune(min_cutoff, beta, d_cutoff)
+        self._xh: _Packed = np.zeros(0)  # X̂, last filtered value
+        self._dxh: _Packed = np.zeros(0)  # Ẋ̂, smoothed derivative, unit/s
+
+    def tune(self, min_cutoff: float, beta: float, d_cutoff: float) -> None:
+        """Change the parameters from the next sample on, keeping the filter's state (a live
+        tuning panel turns them while the signal flows).
+
+        >>> f = OneEuroFilter(min_cutoff=1.0)
+        >>> _ = f.filter(0.0, dt=0.01)
+        >>> f.tune(min_cutoff=1e6, beta=0.0, d_cutoff=1.0)  # a cutoff this high passes the input
+        >>> round(f.filter(1.0, dt=0.01), 4)
+        1.0
+        """
         self._min_cutoff = _check_param(
             "min_cutoff", min_cutoff, "a finite frequency > 0 Hz", strictly_positive=True
         )
@@ -388,8 +402,6 @@ class OneEuroFilter(_RowFilter):
         self._w_min = _TWO_PI * self._min_cutoff
         self._w_beta = _TWO_PI * self._beta
         self._w_d = _TWO_PI * self._d_cutoff
-        self._xh: _Packed = np.zeros(0)  # X̂, last filtered value
-        self._dxh: _Packed = np.zeros(0)  # Ẋ̂, smoothed derivative, unit/s
 
     @property
     def min_cutoff(self) -> float:

@@ -61,6 +61,7 @@ class PerceivedGravity:
     def __init__(self, config: Perception) -> None:
         self.config = config
         one_euro = OneEuroFilter(config.min_cutoff, config.beta, config.d_cutoff)
+        self._one_euro = one_euro
         self._filter: OneEuroFilter | FilterChain = (
             FilterChain(Median3(), one_euro) if config.spike_filter else one_euro
         )
@@ -69,6 +70,14 @@ class PerceivedGravity:
         self.up_complete = True
         """False while some row has not yet felt a reading strong enough to define its up."""
         self._rows = 0
+
+    def tune(self, config: Perception) -> None:
+        """Take new 1€ parameters and up threshold from the next step on, keeping the filter's
+        state. Adding or removing the spike stage is not a tuning: it needs a new filter."""
+        if config.spike_filter != self.config.spike_filter:
+            raise ValueError("spike_filter: fixed when the perception is built")
+        self._one_euro.tune(config.min_cutoff, config.beta, config.d_cutoff)
+        self.config = config
 
     def resize(self, rows: NDArray[np.intp]) -> None:
         """Re-index after tracked bodies changed: new row i is old row rows[i] (−1: new)."""

@@ -15,6 +15,7 @@ perceiver, no filter). Each stage can be timed.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -186,6 +187,7 @@ class World:
         self._bare = False
         self._plan_dirty = True
         self.time = 0.0
+        self._epoch = (0, 0.0)  # (steps, time) when dt last changed
         self.steps = 0
         self.ledger = ForceLedger()
         self.solver = ForceSolver(
@@ -243,7 +245,11 @@ class World:
     @config.setter
     def config(self, config: WorldConfig) -> None:
         if config.perception != self._config.perception:
-            raise ValueError("config.perception: fixed when the world is built")
+            raise ValueError("config.perception: change it with set_perception")
+        if config.dt != self._config.dt:
+            # Time goes on from now at the new step (time is counted from this epoch, not as a
+            # running sum, so it does not drift).
+            self._epoch = (self.steps, self.time)
         self._config = config
         self.space.iterations = config.iterations
         self.space.damping = config.damping
@@ -253,6 +259,14 @@ class World:
         self.solver.check_sleep = math.isfinite(config.sleep_time)
         self._guard_next = self.steps + GUARD_EVERY if config.guard else _NEVER
         self._plan_dirty = True
+
+    def set_perception(self, perception: Perception) -> None:
+        """Re-tune how perceived gravity is filtered (1€ parameters, up threshold) from the next
+        step on, keeping the filter's state; the spike stage is fixed when the world is built."""
+        if not isinstance(perception, Perception):
+            raise ValueError(f"perception: expected a Perception, got {perception!r}")
+        self.perceived.tune(perception)
+        self._config = dataclasses.replace(self._config, perception=perception)
 
     def _plan(self) -> None:
         """Decide whether the next steps are bare: nothing but ``space.step``."""
@@ -622,7 +636,7 @@ class World:
             # A scene that calls for no effect costs what bare pymunk costs.
             self.space.step(self._config.dt)
             self.steps += 1
-            self.time = self.steps * self._config.dt
+            self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
             if self.steps >= self._guard_next:
                 self._guard_all()
             return
@@ -655,7 +669,8 @@ class World:
             self._plan_dirty = True
         self._field_force = None
         self.steps += 1
-        self.time = self.steps * self.config.dt  # not a running sum: no drift over long runs
+        # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
+        self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
         # the guard: nothing non-finite or runaway reaches the observers
         if self.solver.bodies and self._config.guard:
             self._guard_tracked()

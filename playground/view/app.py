@@ -38,6 +38,7 @@ from playground.view.mouse import Grab, MouseSpring
 from playground.view.overlay import OVERLAY_KEYS, Overlay, Painter, nearest, roles_of
 from playground.view.replay import Recorder, Replay
 from playground.view.scope import Scope
+from playground.view.tuning import Knobs, TuningPanel
 from playground.world import Stage, World
 
 __all__ = [
@@ -140,6 +141,9 @@ CONTROLS: tuple[tuple[str, str], ...] = (
     ("4 / 5", "toggle perceived gravity / world-up compass"),
     ("C", "toggle camera roll"),
     ("F12", "screenshot"),
+    ("T", "tuning panel (sliders; R restores the level's values)"),
+    ("mouse: press + move", "drag a body (soft spring)"),
+    ("mouse: click", "follow a body's forces (empty space: the player)"),
     ("H", "show / hide this help"),
     ("Esc", "quit"),
 )
@@ -227,6 +231,9 @@ class Session:
         self.grab: Grab | None = None
         """What the mouse holds now (None: nothing); pulled toward in every step's CONTROL stage."""
         self.spring = MouseSpring()
+        self.altered: set[str] = set()
+        """What changed the run besides the recorded intents ("mouse drag", "live tuning"): a
+        replay of this session then does not reproduce it."""
         self.pull: tuple[Vec, Vec] | None = None
         """The last step's mouse force (N) and the world point it acted at (m), or None."""
         show.world.on(Stage.CONTROL, self.pull_hook)
@@ -295,6 +302,7 @@ class Session:
         if pull.torque != 0.0:
             world.apply_torque(body, pull.torque, category=Category.APPLIED)
         self.pull = (pull.force, pull.point)
+        self.altered.add("mouse drag")
 
     def intent(self, t: float) -> Intent:
         """The player's intent source (replaces a level's script): this step's intent."""
@@ -341,6 +349,7 @@ class App:
         self.hud = Hud(self.font, self.small)
         self.painter = Painter()
         self.show_help = False
+        self.tuning = TuningPanel(self.small)
         self.paused = False
         self.speed_index = SPEEDS.index(1.0)
         self.running = True
@@ -392,6 +401,7 @@ class App:
         self.selected = None
         self._press = None
         self._cursor = None
+        self.tuning.show(self._knobs())
         self._costs = StageCosts()
         self._follow(0.0)
 
@@ -423,7 +433,10 @@ class App:
     # -- mouse -----------------------------------------------------------------------------------
 
     def _mouse_down(self, pos: Vec) -> None:
-        """A press picks the body under the cursor (and selects it); moving on drags it."""
+        """A press on the tuning panel moves a slider; elsewhere it picks the body under the
+        cursor (and selects it); moving on drags it."""
+        if self.tuning.press(pos):
+            return
         at = self.camera.to_world(pos)
         name = self.world.body_at(at, PICK_PX / self.camera.zoom)
         anchor: Vec = (0.0, 0.0)
@@ -434,6 +447,8 @@ class App:
         self.select(name)
 
     def _mouse_move(self, pos: Vec) -> None:
+        if self.tuning.drag(pos):
+            return
         press = self._press
         if press is None:
             return
@@ -446,6 +461,7 @@ class App:
         self.session.grab = Grab(name, anchor, self.camera.to_world(pos))
 
     def _mouse_up(self) -> None:
+        self.tuning.release()
         self._press = None
         self._cursor = None
         self.session.grab = None
@@ -508,6 +524,8 @@ class App:
             self.roll = not self.roll
         elif key == pygame.K_h:
             self.show_help = not self.show_help
+        elif key == pygame.K_t:
+            self.tuning.visible = not self.tuning.visible
         elif key == pygame.K_F12:
             self.screenshot(Path(f"playground-{self.level}-{self.world.steps:06d}.png"))
         else:
@@ -554,6 +572,8 @@ class App:
     def frame(self, elapsed: float) -> int:
         """Advance one frame of ``elapsed`` s of wall time: physics steps, then the camera.
         Returns the number of physics steps run."""
+        if self.tuning.changed and self.tuning.knobs is not None:
+            self.tune(self.tuning.knobs)
         n = 0 if self.paused else self.accumulator.advance(elapsed, self.speed)
         grab = self.session.grab
         if grab is not None and self._cursor is not None:
@@ -648,9 +668,53 @@ class App:
         )
         if compass is not None:
             self.hud.rects.append(compass)
+        if self.tuning.visible:
+            below = max((r.bottom for r in self.hud.rects[:2]), default=0)
+            self.hud.rects.append(self.tuning.draw(surf, (8, below + 4)))
         if self.show_help:
             self.hud.draw_help(surf, CONTROLS, show.description)
         return surf
+
+    # -- live tuning -----------------------------------------------------------------------------
+
+    def _knobs(self) -> Knobs:
+        """The values the tuning panel edits, as the world and the player's controller have them."""
+        cfg = self.world.config
+        hover = getattr(self.session.player, "config", None)
+        return Knobs(
+            hover_frequency=getattr(hover, "hover_frequency", None),
+            hover_damping=getattr(hover, "hover_damping", None),
+            min_cutoff=cfg.perception.min_cutoff,
+            beta=cfg.perception.beta,
+            dt=cfg.dt,
+            substeps=cfg.substeps,
+        )
+
+    def tune(self, knobs: Knobs) -> None:
+        """Apply ``knobs`` between two steps (they act from the next step on): dt and substeps
+        to the world (and the accumulator), the 1€ parameters to perceived gravity, the hover to
+        the player's controller. The hover frequency is first kept below its limit at the new dt."""
+        knobs = knobs.stable()
+        world = self.world
+        cfg = world.config
+        if (knobs.dt, knobs.substeps) != (cfg.dt, cfg.substeps):
+            world.config = dataclasses.replace(cfg, dt=knobs.dt, substeps=knobs.substeps)
+            self.accumulator.dt = knobs.dt
+            if knobs.dt != cfg.dt:
+                self.scope = Scope(
+                    seconds=self.scope.seconds, dt=knobs.dt, **_scope_of(world, self.scope.name)
+                )
+        p = cfg.perception
+        if (knobs.min_cutoff, knobs.beta) != (p.min_cutoff, p.beta):
+            world.set_perception(
+                dataclasses.replace(p, min_cutoff=knobs.min_cutoff, beta=knobs.beta)
+            )
+        ctrl = self.session.player
+        if knobs.hover_frequency is not None and knobs.hover_damping is not None:
+            ctrl.tune_hover(knobs.hover_frequency, knobs.hover_damping)
+        self.session.altered.add("live tuning")
+        self.tuning.show(self._knobs())
+        self.tuning.changed = False
 
     def _draw_mouse(self, surf: pygame.Surface) -> None:
         """The selected body's marker, and the mouse spring: a band from the grabbed point to the

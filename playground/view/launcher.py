@@ -170,6 +170,12 @@ def play(
         replays = app.replays()
         if replays:
             replays[-1].save(replay_out)
+            if app.session.altered:
+                print(
+                    f"playground play: note: {replay_out} holds the keyboard's intents only; "
+                    f"this session's {' and '.join(sorted(app.session.altered))} are not in it",
+                    file=sys.stderr,
+                )
     if window is not None:
         pygame.display.quit()
     return 0
