@@ -195,6 +195,8 @@ TRACTION_FREE_HOVER = math.inf
 """``traction_unbounded`` tells the drive the hover pushes with this much (no traction bound)."""
 GRIP_READING_SCALE = 0.5
 """``grip_reading`` scales the controller's grip reading by this."""
+HOVER_READING_SCALE = 0.5
+"""``hover_reading`` scales the controller's hover reading by this."""
 GRIP_FORCE = 700.0
 """``grip_weakened`` sets the grip budget to this, N: above a 70 kg player's weight (686.7 N),
 below what a climb at 1 m/s² needs (756.7 N)."""
@@ -230,6 +232,20 @@ def _hover_removed() -> Iterator[None]:
     """No hover spring at all: the capsule stands on its own end cap, and with no hover force
     the drive has no traction."""
     with _replaced(controller_mod.Controller, "_hover", lambda _: lambda *a, **k: 0.0):
+        yield
+
+
+@_register("hover_reading")
+def _hover_reading() -> Iterator[None]:
+    """The controller's own hover reading is halved (the force it applies is unchanged)."""
+
+    def then(a: dict[str, Any], result: None) -> None:
+        me = a["self"]
+        hx, hy = me.last_forces.hover
+        k = HOVER_READING_SCALE
+        me.last_forces = dataclasses.replace(me.last_forces, hover=(k * hx, k * hy))
+
+    with _after(controller_mod.Controller, "_control", ("self",), then):
         yield
 
 
