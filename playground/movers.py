@@ -229,10 +229,17 @@ class Mover:
         self.path = path
 
     def place(self, t: float) -> None:
-        """Put the body at its pose at time ``t``: only before the first step (setup)."""
+        """Put the body at its pose at time ``t``: only before the first step (setup).
+
+        Its shapes are re-indexed at once: Chipmunk caches where a shape is and refreshes that
+        only when it steps, so a query before the first step (a player's ground probe) would find
+        the shapes where the body was before it was placed.
+        """
         (x, y), a = self.path.pose(t)
         self.body.position = (x, y)
         self.body.angle = a
+        if self.body.space is not None:
+            self.body.space.reindex_shapes_for_body(self.body)
 
     def drive(self, t: float, dt: float) -> None:
         """Set the velocity that brings the body from its pose now to the path's pose at t + dt."""
