@@ -1,0 +1,130 @@
+"""Drives the demo in a real X window with real X input events (xdotool, through the X server's
+XTEST extension), for tests/test_view_window.py. Run under Xvfb::
+
+    xvfb-run -a python tests/window_driver.py OUT_DIR
+
+It opens ``sandbox`` in a window, then — each step checked before the next — toggles every
+overlay key, drags the crate up with the mouse, opens the tuning panel and moves a slider, and
+zooms with the wheel. It writes what it saw to ``OUT_DIR/window.json`` and the window's pixels
+after the drag and after the slider to ``OUT_DIR/drag.png`` and ``OUT_DIR/slider.png``.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+WAIT_S = 20.0  # s of wall time to wait for an X event to reach the app (slow, shared CI machines)
+LEVEL = "sandbox"
+SIZE = (960, 600)
+
+
+def main(out: Path) -> int:
+    import pygame
+
+    from playground.view import App
+    from playground.view.launcher import _open_window, level_names, show_level
+    from playground.view.overlay import OVERLAY_KEYS
+
+    window = _open_window(SIZE)
+    if window is None:
+        return 2
+    app = App(show_level, LEVEL, levels=level_names(), size=SIZE)
+    wid = str(pygame.display.get_wm_info()["window"])
+
+    def pump(frames: int = 1) -> None:
+        for _ in range(frames):
+            for event in pygame.event.get():
+                app.handle(event)
+            app.frame(1.0 / 60.0)
+            app.render()
+            app._present()
+
+    def until(what: str, ok: Callable[[], bool]) -> None:
+        end = time.monotonic() + WAIT_S
+        while not ok():
+            if time.monotonic() > end:
+                raise SystemExit(f"window driver: timed out waiting for {what}")
+            pump()
+
+    def xdo(*args: str) -> None:
+        subprocess.run(["xdotool", *args], check=True, timeout=WAIT_S)
+
+    def shot(name: str) -> None:
+        surface = pygame.display.get_surface()
+        assert surface is not None
+        pygame.image.save(surface, str(out / name))
+
+    report: dict[str, Any] = {"window": wid}
+    pump(5)
+    xdo("windowfocus", "--sync", wid)
+
+    # Every overlay key: each press flips its overlay.
+    toggles: dict[str, list[bool]] = {}
+    for key, (field, _) in OVERLAY_KEYS.items():
+        before = bool(getattr(app.painter.overlay, field))
+        xdo("key", "--clearmodifiers", pygame.key.name(key))
+        until(f"overlay {field}", lambda f=field, b=before: getattr(app.painter.overlay, f) != b)
+        toggles[field] = [before, bool(getattr(app.painter.overlay, field))]
+    report["toggles"] = toggles
+
+    # Drag the crate 2.5 m up: press on it, move in steps, hold, release.
+    crate = app.world.body("crate")
+    start = (crate.position.x, crate.position.y)
+    x, y = (round(c) for c in app.camera.to_screen(start))
+    xdo("mousemove", "--window", wid, str(x), str(y))
+    xdo("mousedown", "1")
+    until("the press", lambda: app._press is not None)
+    lift = round(app.camera.pixels(2.5))
+    for k in range(1, 6):
+        xdo("mousemove", "--window", wid, str(x), str(y - k * lift // 5))
+        pump(2)
+    until("the grab", lambda: app.session.grab is not None)
+    pump(90)
+    report["drag"] = {
+        "start": start,
+        "held": [crate.position.x, crate.position.y],
+        "grabbed": app.session.grab.body if app.session.grab else None,
+        "pull": list(app.session.pull[0]) if app.session.pull else None,
+        "selected": app.selected,
+        "mass": crate.mass,
+        "on_screen": list(app.camera.to_screen((crate.position.x, crate.position.y))),
+    }
+    shot("drag.png")
+    xdo("mouseup", "1")
+    until("the release", lambda: app.session.grab is None)
+
+    # The tuning panel: T opens it; a click on the 1€ min_cutoff track moves that slider.
+    xdo("key", "t")
+    until("the panel", lambda: app.tuning.visible and "min_cutoff" in app.tuning._tracks)
+    track = app.tuning._tracks["min_cutoff"]
+    before = app.world.config.perception.min_cutoff
+    tx, ty = track.x + round(0.9 * track.width), track.centery
+    xdo("mousemove", "--window", wid, str(tx), str(ty), "click", "1")
+    until("the slider", lambda: app.world.config.perception.min_cutoff != before)
+    pump(2)
+    report["slider"] = {
+        "before": before,
+        "after": app.world.config.perception.min_cutoff,
+        "knob": [tx, ty],
+    }
+    shot("slider.png")
+
+    # The wheel zooms.
+    zoom = app.camera.zoom
+    xdo("mousemove", "--window", wid, str(SIZE[0] // 2), str(SIZE[1] // 2), "click", "4")
+    until("the wheel", lambda: app.camera.zoom != zoom)
+    report["zoom"] = [zoom, app.camera.zoom]
+
+    (out / "window.json").write_text(json.dumps(report, indent=1), encoding="utf-8")
+    pygame.display.quit()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(Path(sys.argv[1])))
