@@ -178,6 +178,11 @@ def cmd_faults(args: argparse.Namespace) -> int:
     from playground import faults
 
     known = faults.names()
+    if args.list:
+        width = max(len(name) for name in known)
+        for name in known:
+            print(f"{name:<{width}}  {faults.BREAKS[name].doc}")
+        return 0
     unknown = [b for b in args.breaks or [] if b not in known]
     if unknown:
         print(
@@ -368,6 +373,7 @@ def parser() -> argparse.ArgumentParser:
         help="try this break on every level, declared or not (repeatable)",
     )
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--list", action="store_true", help="list the breaks and what each breaks")
     p.set_defaults(func=cmd_faults)
 
     p = sub.add_parser("play", help="open a level in the desktop view (pygame-ce)")

@@ -131,6 +131,7 @@ def _with_argument(
 
         def wrapped(*args: Any, **kwargs: Any) -> Any:
             bound = sig.bind(*args, **kwargs)
+            bound.apply_defaults()
             bound.arguments[param] = change(bound.arguments[param])
             return original(*bound.args, **bound.kwargs)
 

@@ -211,3 +211,12 @@ def test_the_readme_levels_table_lists_what_each_level_must_catch() -> None:
         listed = rows[name]
         catches = load(path).catches
         assert listed == (", ".join(f"`{c}`" for c in catches) or "—"), name
+
+
+def test_cli_faults_list_names_every_break_with_what_it_breaks(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    assert main(["faults", "--list"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert [line.split()[0] for line in lines] == faults.names()
+    assert all(faults.BREAKS[line.split()[0]].doc in line for line in lines)
