@@ -1452,6 +1452,42 @@ def ch9_excess_vs_two_back() -> float:
     return float(np.max(np.abs(excess[idx] - r[idx - 2, 2] / (10.0 * G))))
 
 
+@cache
+def stale_world_run() -> tuple[int, float]:
+    """Chapter 9's falling platform in a :class:`World` with the contact split on: (steps whose
+    split is known, largest |contact sum − engine force| on them in m·g) over one second."""
+    world = World(WorldConfig(contact_split=True))
+    platform = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    floor = pymunk.Poly.create_box(platform, (4.0, 0.2))
+    floor.friction = 1.0
+    world.add("platform", platform, floor)
+    world.add_box("box", mass=10.0, size=(0.5, 0.5), position=(0.0, 0.35), friction=1.0)
+    world.track("box")
+
+    def fall(w: World) -> None:
+        platform.velocity = (0.0, -DROP_ACCELERATION * max(w.time - DROP_START, 0.0))
+
+    world.on(Stage.CONTROL, fall)
+    known, worst = 0, 0.0
+    for _ in range(round(1.0 / DT)):
+        world.step()
+        f = world.forces("box")
+        if f.split_valid:
+            known += 1
+            worst = max(worst, abs(f.contact[1] - f.engine[1]) / (10.0 * G))
+    return known, worst
+
+
+def ch9_world_known_steps() -> float:
+    """Steps (of 120) on which the World's contact split is known on the falling platform."""
+    return float(stale_world_run()[0])
+
+
+def ch9_world_worst() -> float:
+    """Largest |contact sum − engine force| on those steps, m·g."""
+    return stale_world_run()[1]
+
+
 def ch9_weight_share() -> float:
     """(g − a)/g: the share of its weight the falling platform carries on average."""
     return (G - DROP_ACCELERATION) / G
@@ -1578,6 +1614,8 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch9_fresh_error,
         ch9_excess_vs_two_back,
         ch9_weight_share,
+        ch9_world_known_steps,
+        ch9_world_worst,
     )
 }
 """Every number the chapters quote, by the name their markers use."""
