@@ -83,9 +83,9 @@ def printed_rounding(text: str) -> float:
     return 0.5 * 10.0**-digits
 
 
-def test_there_are_nine_chapters_and_an_index_linking_them_in_order() -> None:
+def test_there_are_ten_chapters_and_an_index_linking_them_in_order() -> None:
     """The table of contents lists every chapter, in reading order."""
-    assert len(CHAPTERS) == 9
+    assert len(CHAPTERS) == 10
     index = (DOCS / "index.md").read_text(encoding="utf-8")
     positions = [index.find(f"chapters/{p.name}") for p in CHAPTERS]
     assert all(p >= 0 for p in positions), positions
@@ -302,3 +302,14 @@ def test_chapter_9_stale_steps_are_exactly_the_remade_contacts() -> None:
     idx = np.nonzero(remade)[0]
     assert np.all(np.abs(excess[idx] - r[idx - 2, 2] / mg) < TOL_IMPULSE)
     assert figures.ch9_stale_steps() == np.count_nonzero(remade) > 0
+
+
+def test_chapter_10_guards_removed_are_caught() -> None:
+    """Chapter 10: with ring_room's default wall the hard ring loses a body at 1/30 s (the
+    containment check catches it), and without the runtime guard a runaway body goes on far past
+    where the guard stops the world."""
+    assert figures.thin_ring_outcome().broke == "contained"
+    assert figures.hard_run("spinning ring", figures.THIN_WALL_DT).broke is None
+    stopped = figures.ch10_guard_step()
+    assert 0 < stopped < figures.ch10_unguarded_last_step()
+    assert figures.runaway_run(False)[1] == 0 or figures.runaway_run(False)[1] > stopped
