@@ -1664,10 +1664,9 @@ def runaway_run(guard: bool) -> tuple[Array, int, str]:
     world.on(Stage.CONTROL, spring)
     rows: list[list[float]] = []
     # Unguarded, the numbers overflow on purpose: numpy's overflow warnings are the point, not news.
-    quiet = np.errstate(over="ignore", invalid="ignore", divide="ignore")
     for k in range(1, 1201):
         try:
-            with quiet:
+            with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
                 world.step()
         except (RunawayError, ValueError) as exc:  # the runaway bounds: on state or on a force
             return np.array(rows, dtype=np.float64), k, str(exc)
