@@ -13,7 +13,12 @@ Each subcommand is a function ``cmd_<name>(args) -> exit code`` registered in :f
 for every tracked body, at the last step, SI units, vectors as ``[x, y]``. ``state`` is null for a
 body without a controller; ``contact`` and ``constraint`` are null unless the level sets
 ``settings.contact_split``, and on a step whose split is unknown; ``support_filtered`` is
-−m · ``perceived_gravity`` (the 1€-filtered support force). The exit code is 1 when a check fails.
+−m · ``perceived_gravity`` (the 1€-filtered support force).
+
+Exit codes, for every command: 0 ok; 1 a check failed (or a level did not validate, for
+``check``); 2 bad input or environment (a malformed level, an unusable path, a missing optional
+dependency); 130 interrupted (Ctrl-C). :func:`main` maps every such error to a one-line message on
+stderr in one place; nothing ends in a traceback.
 
 >>> main(["check", "incline"])
 ok      incline: Incline
@@ -33,13 +38,26 @@ from pathlib import Path
 from typing import Any
 
 from playground import __version__
+from playground._preflight import UsageError, writable
 from playground.bench import cli as bench_cli
 from playground.guard import RunawayError
 from playground.level import LevelError, find, load, schema, shipped
 
-__all__ = ["main", "parser"]
+__all__ = ["EXIT_FAILED", "EXIT_INTERRUPTED", "EXIT_OK", "EXIT_USAGE", "main", "parser"]
 
 Command = Callable[[argparse.Namespace], int]
+
+EXIT_OK = 0
+"""Everything ran and every check passed."""
+EXIT_FAILED = 1
+"""A check failed (or, for ``check``, a level file has problems)."""
+EXIT_USAGE = 2
+"""Bad input or environment: a malformed level, an unusable path, a missing optional dependency."""
+EXIT_INTERRUPTED = 130
+"""Interrupted by Ctrl-C (128 + SIGINT, as shells report it)."""
+
+EXTRAS = {"pygame": "view", "PIL": "view", "matplotlib": "bench"}
+"""Optional dependencies by module, and the extra of ``pymunk-playground`` that installs each."""
 
 
 def cmd_list(args: argparse.Namespace) -> int:
@@ -80,16 +98,17 @@ def _vec(v: Sequence[float]) -> list[float | None] | None:
 def cmd_run(args: argparse.Namespace) -> int:
     """Run a level headless, report its checks (and bodies with --json); exit 1 on a failure."""
     from playground.expectations import watch
-    from playground.recording import recording
+    from playground.recording import check_output, recording
     from playground.scene import build
 
-    try:
-        path = find(args.level)
-        level = load(path)
-        scene = build(level)
-    except LevelError as exc:
-        print(f"playground run: {exc}", file=sys.stderr)
-        return 2
+    if args.record is not None:
+        try:
+            check_output(args.record, force=args.force)
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
+    path = find(args.level)
+    level = load(path)
+    scene = build(level)
     seconds = level.settings.seconds if args.seconds is None else args.seconds
     if not (math.isfinite(seconds) and seconds >= 0):
         print(f"playground run: --seconds: expected a number >= 0, got {seconds}", file=sys.stderr)
@@ -100,15 +119,12 @@ def cmd_run(args: argparse.Namespace) -> int:
             return 2
         seconds = covered if args.seconds is None else seconds
     checks = watch(scene)
+    _progress_bar(scene, seconds, enabled=not args.no_progress)
     start = time.perf_counter()
     try:
         if args.record is not None:
-            try:
-                with recording(scene, args.record):
-                    scene.run(seconds)
-            except ValueError as exc:
-                print(f"playground run: {exc}", file=sys.stderr)
-                return 2
+            with recording(scene, args.record, force=args.force):
+                scene.run(seconds)
         else:
             scene.run(seconds)
     except RunawayError as exc:
@@ -153,6 +169,32 @@ def cmd_run(args: argparse.Namespace) -> int:
         for r in results:
             print(f"  {'pass' if r.passed else 'FAIL'}  {r.detail}")
     return 0 if all(r.passed for r in results) else 1
+
+
+PROGRESS_MIN_STEPS = 2400
+"""Runs shorter than this many steps (20 s at the default dt, about a second of wall time) get
+no progress bar."""
+
+
+def _progress_bar(scene: Any, seconds: float, *, enabled: bool) -> None:
+    """A progress bar (simulated seconds) on stderr for a long run, when stderr is a terminal."""
+    from playground.world import Stage
+
+    steps = round(seconds / scene.world.config.dt)
+    if not enabled or steps < PROGRESS_MIN_STEPS or not sys.stderr.isatty():
+        return
+    from tqdm import tqdm
+
+    bar = tqdm(total=steps, unit="step", desc="run", leave=False)
+    every = max(1, steps // 200)
+
+    def advance(world: Any) -> None:
+        if world.steps % every == 0 or world.steps >= steps:
+            bar.update(min(world.steps, steps) - bar.n)
+            if bar.n >= steps:
+                bar.close()
+
+    scene.world.on(Stage.OBSERVE, advance)
 
 
 def _replay(file: str, name: str, scene: Any) -> float | None:
@@ -294,14 +336,10 @@ def _print_matrix(rows: Sequence[Any], wall: float) -> None:
 
 def cmd_play(args: argparse.Namespace) -> int:
     """Open a level in the desktop view (see :mod:`playground.view.launcher`)."""
-    try:
-        from playground.view.launcher import run_play
-    except ImportError as exc:
-        print(
-            f"playground play: needs pygame-ce: pip install 'pymunk-playground[view]' ({exc})",
-            file=sys.stderr,
-        )
-        return 2
+    if args.replay_out is not None:
+        writable("--replay-out", args.replay_out)
+    from playground.view.launcher import run_play
+
     return run_play(args)
 
 
@@ -330,7 +368,7 @@ def cmd_schema(args: argparse.Namespace) -> int:
     if args.output is None:
         sys.stdout.write(text)
     else:
-        Path(args.output).write_text(text, encoding="utf-8")
+        writable("--output", args.output).write_text(text, encoding="utf-8")
     return 0
 
 
@@ -361,6 +399,8 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print one JSON object (see docs)")
     p.add_argument("--record", metavar="FILE", help="record every step to FILE (.csv or .npz)")
     p.add_argument("--replay", metavar="FILE", help="drive the player with a `play` replay")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --record file")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     p.set_defaults(func=cmd_run)
 
     p = sub.add_parser("faults", help="run levels under the breaks they declare to catch")
@@ -403,10 +443,42 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of the ``playground`` console script; returns the exit code."""
+    """Entry point of the ``playground`` console script; returns the exit code.
+
+    The one place where errors become a one-line message on stderr and an exit code (see the
+    module docstring); argparse itself exits 2 on a malformed command line.
+    """
     args = parser().parse_args(argv)
     func: Command = args.func
-    return func(args)
+    who = f"playground {args.command}"
+    try:
+        return func(args)
+    except KeyboardInterrupt:
+        print(f"{who}: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except LevelError as exc:
+        print(f"{who}: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except UsageError as exc:
+        print(f"{who}: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except ModuleNotFoundError as exc:
+        print(f"{who}: {_missing(exc)}", file=sys.stderr)
+        return EXIT_USAGE
+    except OSError as exc:
+        where = f"{exc.filename}: " if exc.filename is not None else ""
+        print(f"{who}: {where}{exc.strerror or exc}", file=sys.stderr)
+        return EXIT_USAGE
+
+
+def _missing(exc: ModuleNotFoundError) -> str:
+    """What to install for a missing module."""
+    top = (exc.name or "").split(".")[0]
+    extra = EXTRAS.get(top)
+    if extra is None:
+        return f"missing module {top!r} ({exc})"
+    package = {"pygame": "pygame-ce", "PIL": "Pillow"}.get(top, top)
+    return f"needs {package}: pip install 'pymunk-playground[{extra}]'"
 
 
 if __name__ == "__main__":

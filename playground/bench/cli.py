@@ -16,6 +16,7 @@ import sys
 import time
 from pathlib import Path
 
+from playground._preflight import needs, writable
 from playground.bench import overhead, report
 from playground.bench.accuracy import Result, plan, sweep
 
@@ -41,7 +42,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     acc.add_argument(
         "--workers", type=int, default=None, help="processes (default: CPU count; 0: in-process)"
     )
-    acc.add_argument("--no-progress", action="store_true", help="no progress bar")
+    for p in (acc, over):
+        p.add_argument("--no-progress", action="store_true", help="no progress bar")
     docs = sub.add_parser("docs", help="regenerate docs/accuracy.md, its tables and figures")
     docs.add_argument("dir", type=Path, nargs="?", default=Path("docs"), help="default: docs")
     docs.add_argument("--quick", action="store_true", help="small sizes (to try the command)")
@@ -58,13 +60,27 @@ def _accuracy(args: argparse.Namespace) -> list[Result]:
     )
 
 
+def _preflight(args: argparse.Namespace) -> None:
+    """Output folders and matplotlib checked before a sweep of minutes, not after it."""
+    if args.bench == "docs":
+        needs("matplotlib", "bench docs")
+        return
+    if args.csv is not None:
+        writable("--csv", args.csv)
+    if args.figure is not None:
+        writable("--figure", args.figure)
+        needs("matplotlib", "--figure")
+
+
 def run(args: argparse.Namespace) -> int:
     """Run the parsed ``bench`` arguments; returns the exit status."""
+    _preflight(args)
+    progress = not getattr(args, "no_progress", False)
     if args.bench == "docs":
         t0 = time.perf_counter()
         rows = _accuracy(args)
         t1 = time.perf_counter()
-        over = overhead.profile(quick=args.quick)
+        over = overhead.profile(quick=args.quick, progress=progress)
         t2 = time.perf_counter()
         fixed = overhead.fixed_cost()
         for path in report.write_docs(
@@ -80,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
             report.accuracy_figure(rows, args.figure)
         print(report.to_json(rows) if args.json else report.accuracy_markdown(rows))
         return 0
-    rows_o = overhead.profile(quick=args.quick)
+    rows_o = overhead.profile(quick=args.quick, progress=progress)
     if args.csv is not None:
         args.csv.write_text(report.to_csv(rows_o), encoding="utf-8")
     if args.figure is not None:

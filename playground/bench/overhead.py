@@ -19,6 +19,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 import pymunk
 
@@ -240,8 +241,12 @@ def profile(
     quick: bool = False,
     repeats: int = 21,
     settle_steps: int = 30,
+    progress: bool = False,
 ) -> list[OverheadRow]:
-    """Time every effect at every size against bare pymunk; rows by size, then effect."""
+    """Time every effect at every size against bare pymunk; rows by size, then effect.
+
+    ``progress`` shows a bar on stderr when it is a terminal (tqdm).
+    """
     sizes = tuple(sizes) if sizes is not None else (QUICK_SIZES if quick else SIZES)
     effects = tuple(effects) if effects is not None else tuple(EFFECTS)
     for e in effects:
@@ -250,9 +255,12 @@ def profile(
     if quick:
         repeats = min(repeats, 2)
     rows: list[OverheadRow] = []
+    bar = _bar(len(sizes) * len(effects)) if progress else None
     for n in sizes:
         at_n: list[OverheadRow] = []
         for effect in effects:
+            if bar is not None:
+                bar.update(1)
             config = WorldConfig(contact_split=effect.startswith("contact split"))
             world = _world(n, config)
             setup = EFFECTS[effect]
@@ -293,7 +301,16 @@ def profile(
             )
             for r in at_n
         ]
+    if bar is not None:
+        bar.close()
     return rows
+
+
+def _bar(total: int) -> Any:
+    """A tqdm bar on stderr, shown only when stderr is a terminal (``disable=None``)."""
+    from tqdm import tqdm
+
+    return tqdm(total=total, unit="point", desc="overhead", leave=False, disable=None)
 
 
 def fixed_cost(repeats: int = 9, steps: int = 2000) -> tuple[float, float]:

@@ -527,7 +527,8 @@ class App:
         elif key == pygame.K_t:
             self.tuning.visible = not self.tuning.visible
         elif key == pygame.K_F12:
-            self.screenshot(Path(f"playground-{self.level}-{self.world.steps:06d}.png"))
+            shot = self.screenshot(Path(f"playground-{self.level}-{self.world.steps:06d}.png"))
+            print(f"playground play: screenshot saved to {shot.resolve()}", file=sys.stderr)
         else:
             kb.key_down(key)
 

@@ -147,7 +147,7 @@ def play(
             attach_replay(show, watch)
     except (LevelError, ReplayError) as exc:
         print(f"playground play: {exc}", file=sys.stderr)
-        return 1
+        return 2
     recorder = GifWriter(every=round(1.0 / (HEADLESS_FRAME * GIF_FPS))) if movie else None
     window: pygame.Surface | None = None
     if headless:
