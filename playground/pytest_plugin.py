@@ -1,40 +1,84 @@
 """pytest plugin: ``pytest levels/`` runs each level file and reports each expectation.
 
-Registered by the ``pytest11`` entry point, so it works wherever playground is installed. A
-``*.toml`` file is a level file when it lives in a directory called ``levels`` or matches one of
-the ``levels_glob`` ini patterns (default ``levels/*.toml`` and ``*/levels/*.toml``). Each file
-is built and run once, on its first item; each expectation is one test item whose failure
-message is the check's detail.
-A file that does not load is one failing item listing every problem.
+Registered by the ``pytest11`` entry point, so it is active wherever playground is installed, and
+it stays in its lane: a ``*.toml`` file is collected as a level only when
+
+- it is named on the command line (``pytest path/to/any_level.toml``, wherever it lives);
+- the project opts in: its ``playground_levels`` ini option lists glob patterns, relative to the
+  rootdir, of its level files (this repository lists ``levels/*.toml``); or
+- the file declares itself a playground level: its first line is a ``#:schema`` directive naming
+  the level schema (``level.schema.json``), as every shipped level's is.
+
+Any other TOML file (another project's ``levels/forest.toml``) is left alone. Each level is built
+and run once, on its first item; each expectation is one test item whose failure message is the
+check's detail. A file that does not load is one failing item listing every problem.
 """
 
 from __future__ import annotations
 
+import fnmatch
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import pytest
 
-from playground.level import Level, LevelError, load
+from playground.level import SCHEMA_ID, Level, LevelError, load
 
-__all__ = ["LevelFile", "LevelItem"]
+__all__ = ["INI_OPTION", "LevelFile", "LevelItem", "declares_level"]
+
+INI_OPTION = "playground_levels"
+"""The ini option a project uses to opt its level files in (glob patterns, rootdir-relative)."""
+
+SCHEMA_NAME = SCHEMA_ID.rsplit("/", 1)[-1]
+"""The schema's file name, which a level's ``#:schema`` directive ends with."""
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     parser.addini(
-        "levels_glob",
-        "glob patterns of level files collected by the playground plugin",
+        INI_OPTION,
+        "glob patterns (relative to the rootdir) of level files the playground plugin collects",
         type="args",
-        default=["levels/*.toml", "*/levels/*.toml"],
+        default=[],
     )
+
+
+def declares_level(path: Path) -> bool:
+    """Whether the file's first line is a ``#:schema`` directive naming the level schema.
+
+    >>> from playground.level import find
+    >>> declares_level(find("rest"))
+    True
+    """
+    try:
+        with path.open(encoding="utf-8") as fh:
+            first = fh.readline(4096).strip()
+    except (OSError, UnicodeDecodeError):
+        return False
+    return first.startswith("#:schema") and first.removeprefix("#:schema").strip().endswith(
+        SCHEMA_NAME
+    )
+
+
+def _opted_in(file_path: Path, config: pytest.Config) -> bool:
+    patterns: list[str] = config.getini(INI_OPTION)
+    if not patterns:
+        return False
+    try:
+        relative = file_path.resolve().relative_to(config.rootpath.resolve()).as_posix()
+    except ValueError:
+        return False
+    return any(fnmatch.fnmatch(relative, pattern) for pattern in patterns)
 
 
 def pytest_collect_file(file_path: Path, parent: pytest.Collector) -> LevelFile | None:
     if file_path.suffix != ".toml":
         return None
-    patterns = parent.config.getini("levels_glob")
-    if file_path.parent.name == "levels" or any(file_path.match(p) for p in patterns):
+    if (
+        parent.session.isinitpath(file_path)
+        or _opted_in(file_path, parent.config)
+        or declares_level(file_path)
+    ):
         collected: LevelFile = LevelFile.from_parent(parent, path=file_path)
         return collected
     return None

@@ -56,7 +56,7 @@ def test_ten_minutes_of_sandbox_stay_under_60_mb(tmp_path: Path) -> None:
     out, err = child.communicate()
     assert child.returncode == 0, err
     peak_mb = float(out.splitlines()[-1])
-    assert peak_mb < RSS_LIMIT_MB
+    assert peak_mb < RSS_LIMIT_MB, f"peak {peak_mb:.1f} MB"
     level = load(find("sandbox"))
     steps = round(LONG_RUN_S / level.settings.dt)
     with np.load(npz) as data:
