@@ -139,16 +139,28 @@ def test_bounce_draws_a_one_step_bounce_spike() -> None:
     assert up >= arrow_length(3.0 * m * 9.81, m, w), (up, w)
 
 
-def test_crusher_shows_the_crate_on_the_player() -> None:
+def test_crusher_shows_the_crate_pressing_on_the_player() -> None:
     """crusher: the player reports being crushed and the contact overlay draws the crate's load
-    on its head: a normal force pointing down from the top of the capsule, over a weight long."""
+    pressing on its head: a normal force coming down from above onto the top of the capsule,
+    over a weight long; at the end the crate lies on the floor beside the upright player."""
     app = at_moment("crusher")
     ctrl = app.session.show.controllers["player"]
     assert ctrl.state.value == "crushed"
     p = app.world.body("player").position
-    head = app.camera.to_screen((p.x, p.y + ctrl.config.half_length))
-    down = reach(mask(app, "normal"), head, (0.0, 1.0))
-    assert down >= weight_px(app, "player"), down
+    head = app.camera.to_screen((p.x, p.y + ctrl.config.half_length + ctrl.config.radius))
+    normal = mask(app, "normal")
+    assert reach(normal, head, (0.0, -1.0)) >= weight_px(app, "player")
+    # Its tip is on the head: the pressing arrow does not run on through the body (nor does the
+    # floor's, whose tip is at the feet).
+    feet = app.camera.to_screen((p.x, p.y - ctrl.config.half_length - ctrl.config.radius))
+    x0, x1 = int(head[0] - BAND_PX), int(head[0] + BAND_PX)
+    assert not normal[x0:x1, int(head[1]) + 6 : int(feet[1]) - 6].any()
+    end = at_moment("crusher", 5.0)
+    assert end.session.show.controllers["player"].state.value == "grounded"
+    player, crate = screen(end, "player"), screen(end, "crate")
+    assert crate[0] - player[0] >= end.camera.pixels(0.75)
+    fill = tuple(int(c * 0.45) for c in COLOURS["dynamic"])
+    assert tuple(end.surface.get_at((int(crate[0]), int(crate[1]))))[:3] == fill
 
 
 def test_elevator_support_grows_above_the_weight() -> None:

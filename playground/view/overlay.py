@@ -272,8 +272,10 @@ class Painter:
                 pygame.draw.circle(surf, COLOURS["contact"], cam.to_screen(p), 4)
             self.drawn.add("contact")
             mid = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
-            out += self._arrow(cam, mid, normal, m, w_px, "normal", 3)
-            out += self._arrow(cam, mid, friction, m, w_px, "friction", 3)
+            # A contact pushes: its arrows end where it acts, coming from the other body's side
+            # (a crate's load presses down onto a head, a floor pushes up into the feet).
+            for force, kind in ((normal, "normal"), (friction, "friction")):
+                out += [_ending_at(a) for a in self._arrow(cam, mid, force, m, w_px, kind, 3)]
         return out
 
     def _joint_forces(
@@ -344,23 +346,23 @@ class Painter:
     def legend(self) -> list[LegendEntry]:
         """Legend entries for what the last :meth:`draw` put on screen, in a fixed order."""
         catalogue = (
-            ("support_filtered", "support force, filtered", "thick"),
-            ("support", "support force, raw (peak of the frame)", "line"),
+            ("support_filtered", "support, filtered", "thick"),
+            ("support", "support, raw (frame peak)", "line"),
             ("gravity", "gravity m·g", "line"),
             ("hover", "hover spring", "line"),
             ("drive", "drive", "line"),
-            ("grip", "grip force", "line"),
-            ("grip_arm", "hand holding on (grip joint)", "thick"),
-            ("push", "push", "line"),
+            ("grip", "grip", "line"),
+            ("grip_arm", "hand (grip joint)", "thick"),
+            ("push", "push on itself", "line"),
             ("contact", "contact point", "dot"),
-            ("normal", "contact normal force", "line"),
-            ("friction", "contact friction force", "line"),
-            ("joint_force", "joint force at its anchor", "line"),
-            ("reaction", "reaction on the body under it", "thick"),
+            ("normal", "contact normal", "line"),
+            ("friction", "contact friction", "line"),
+            ("joint_force", "joint force", "line"),
+            ("reaction", "reaction on ground", "thick"),
             ("perceived", "perceived gravity", "line"),
-            ("up", "perceived up (unit)", "line"),
-            ("nullify", "X would nullify this body", "ring"),
-            ("mouse", "mouse pull (an applied force)", "line"),
+            ("up", "perceived up", "line"),
+            ("nullify", "X nullifies this", "ring"),
+            ("mouse", "mouse pull (applied)", "line"),
         )
         entries = [
             LegendEntry("hand" if k == "grip_arm" else k, text, swatch)
@@ -371,7 +373,7 @@ class Painter:
             entries.append(
                 LegendEntry(
                     "text",
-                    f"= m·g of {self.scale_body} ({self.scale_newtons:.0f} N)",
+                    f"m·g of {self.scale_body} ({self.scale_newtons:.0f} N)",
                     "scale",
                     self.scale_px,
                 )
@@ -437,6 +439,11 @@ class Painter:
         surf.blit(text, (rect.centerx - text.get_width() // 2, rect.bottom - font.get_linesize()))
         self.drawn.add("compass")
         return rect
+
+
+def _ending_at(a: ScreenArrow) -> ScreenArrow:
+    """The same arrow moved back along itself so that its tip is where it started."""
+    return ScreenArrow((a.start[0] - a.d[0], a.start[1] - a.d[1]), a.d, a.kind, a.width)
 
 
 def _grip(ctrl: Any) -> Grip | None:

@@ -114,11 +114,13 @@ def draw_scope(
         left = min(x - label.get_width() // 2, plot.right - label.get_width())
         surf.blit(label, (left, plot.bottom + 2))
     pygame.draw.line(surf, COLOURS["dim"], (plot.x, plot.bottom), (plot.right, plot.bottom))
-    surf.blit(font.render(f"{top:.0f} N", True, COLOURS["dim"]), (rect.x + 4, plot.y))
+    top_label = font.render(f"{top:.0f} N", True, COLOURS["dim"])
+    surf.blit(top_label, (rect.x + 4, plot.y))
     surf.blit(font.render("0", True, COLOURS["dim"]), (rect.x + 4, plot.bottom - 8))
     title = f"{scope.name}: |support| raw (thin) / filtered (thick), N"
-    label = font.render(title, True, COLOURS["dim"])
-    surf.blit(label, (plot.right - label.get_width(), plot.y))
+    surf.blit(
+        font.render(title, True, COLOURS["dim"]), (rect.x + top_label.get_width() + 16, plot.y)
+    )
     if raw.size < 2:
         return top
     xs = plot.right - (raw.size - 1 - np.arange(raw.size)) * per_px
@@ -144,5 +146,8 @@ def draw_scope(
             surf, COLOURS["support"], [(x, plot.y), (x - 4, plot.y + 6), (x + 4, plot.y + 6)]
         )
         left = min(max(x - text.get_width() / 2, plot.x), plot.right - text.get_width())
+        # On its own dark box: the value reads over the traces and the title.
+        box = text.get_rect(topleft=(round(left), plot.y + 7)).inflate(4, 0)
+        surf.fill(COLOURS["background"], box)
         surf.blit(text, (left, plot.y + 7))
     return top
