@@ -199,11 +199,15 @@ class GroundHit:
             moving at this velocity: on a turning floor it is taken at the centre, not at the hit
             point, which is ride height further out (inside a ring spinning at ω the hit point's
             speed is ω·R, the centre's ω·(R − ride height)).
-        frame_acceleration: how much ``frame_velocity`` changes per second as the ground turns
-            by ω·dt, m/s²: the centripetal −ω²·d to first order. The ground's own linear and
-            angular acceleration are not known from one step and are left to the drive's
-            feedback. Gravity minus it is the gravity *felt* in the ground's frame: inside a
-            spinning ring, ω²·r outward.
+        frame_acceleration: how much ``frame_velocity`` changes per second, m/s²: as the ground
+            turns by ω·dt (the centripetal −ω²·d to first order), plus, on a kinematic ground,
+            its own acceleration A + α × d read from how its velocity and spin changed since the
+            last step (a mover sets them a step ahead, so this is the acceleration the coming
+            step needs). A dynamic ground's change of velocity is partly our own reaction on it:
+            feeding that back would push a light crate harder the more it yields, so its
+            acceleration is left to the drive's feedback. Gravity minus ``frame_acceleration``
+            is the gravity *felt* in the ground's frame: inside a spinning ring, ω²·r outward;
+            in a lift accelerating up at a, g + a.
     """
 
     body: pymunk.Body
@@ -326,6 +330,8 @@ class Controller:
         self._jump_pressed_at = -math.inf
         self._grounded_at = -math.inf
         self._last_ground: GroundHit | None = None
+        # The kinematic ground under us last step and its velocity (m/s) and spin (rad/s).
+        self._ground_motion: tuple[pymunk.Body, float, float, float] | None = None
         self._rising = False
         self._saturated = 0.0
         self._still = 0.0
@@ -510,6 +516,7 @@ class Controller:
             default=None,
         )
         if info is None or info.shape is None or info.shape.body is None:
+            self._ground_motion = None
             return None
         ground = info.shape.body
         hx, hy = info.point
@@ -529,6 +536,7 @@ class Controller:
         rx = (cos_t * dx - sin_t * dy - dx) / dt
         ry = (sin_t * dx + cos_t * dy - dy) / dt
         v = ground.velocity
+        own_x, own_y = self._ground_acceleration(ground, dx, dy, dt)
         return GroundHit(
             body=ground,
             point=(hx, hy),
@@ -538,10 +546,31 @@ class Controller:
             walkable=nx * ux + ny * uy >= self._cos_slope,
             frame_velocity=(v.x + rx, v.y + ry),
             frame_acceleration=(
-                (cos_t * rx - sin_t * ry - rx) / dt,
-                (sin_t * rx + cos_t * ry - ry) / dt,
+                (cos_t * rx - sin_t * ry - rx) / dt + own_x,
+                (sin_t * rx + cos_t * ry - ry) / dt + own_y,
             ),
         )
+
+    def _ground_acceleration(self, ground: pymunk.Body, dx: float, dy: float, dt: float) -> Vec:
+        """The ground's own acceleration at our centre, A + α × d (m/s², d from its centre of
+        gravity, m), read from how its velocity and spin changed since the last step (dt, s).
+
+        Fed forward, it lets the drive and the hover keep up with an accelerating platform
+        instead of lagging a·drive_time behind it (5 cm over a second at 1 m/s²). Only for a
+        kinematic ground (zero otherwise, and on the first step over a new ground): a dynamic
+        ground's change of velocity is partly our own reaction on it.
+        """
+        v = ground.velocity
+        w = ground.angular_velocity
+        prev = self._ground_motion
+        if ground.body_type != pymunk.Body.KINEMATIC:
+            self._ground_motion = None
+            return _ZERO
+        self._ground_motion = (ground, v.x, v.y, w)
+        if prev is None or prev[0] is not ground:
+            return _ZERO
+        alpha = (w - prev[3]) / dt
+        return ((v.x - prev[1]) / dt - alpha * dy, (v.y - prev[2]) / dt + alpha * dx)
 
     def _contact_load(self, world: World, ux: float, uy: float) -> float:
         """Force pressing on us along −up through contacts in the last step, N (the floor's push

@@ -274,6 +274,17 @@ def _drive_slowed() -> Iterator[None]:
         yield
 
 
+@_register("ground_acceleration_ignored")
+def _ground_acceleration_ignored() -> Iterator[None]:
+    """The drive and the hover no longer feed the ground's own acceleration forward: on an
+    accelerating platform the player lags behind it by its acceleration × the drive's time
+    constant."""
+    with _replaced(
+        controller_mod.Controller, "_ground_acceleration", lambda _: lambda *a, **k: (0.0, 0.0)
+    ):
+        yield
+
+
 @_register("traction_unbounded")
 def _traction_unbounded() -> Iterator[None]:
     """The drive is no longer bounded by traction × hover force (only by its budget): a body

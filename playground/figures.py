@@ -73,13 +73,24 @@ def _record(world: World, seconds: float, probe: Callable[[World], list[float]])
 
 
 @cache
-def platform_run(acceleration: float = 1.0) -> Array:
+def platform_run(acceleration: float = 1.0, feed_forward: bool = True) -> Array:
     """The moving_platform level (its platform accelerating at ``acceleration``, m/s², for 1 s),
-    plus a kinematic character placed beside the player.
+    plus a kinematic character placed beside the player; ``feed_forward`` False runs it under
+    the ``ground_acceleration_ignored`` break (the drive no longer feeds the platform's
+    acceleration forward).
 
     Columns: t (s), platform x, player x, kinematic character x (m), drive force x (N).
     The kinematic character's velocity is its input (zero): nothing the world does can move it.
     """
+    if not feed_forward:
+        from playground.faults import apply
+
+        with apply("ground_acceleration_ignored"):
+            return _platform_run(acceleration)
+    return _platform_run(acceleration)
+
+
+def _platform_run(acceleration: float) -> Array:
     from playground.level import find, load
     from playground.scene import build
 
@@ -112,16 +123,29 @@ def ch1_platform_travel() -> float:
     return float(r[-1, 1] - r[0, 1])
 
 
-def ch1_player_drift_cm(acceleration: float = 1.0) -> float:
+def ch1_player_drift_cm(acceleration: float = 1.0, feed_forward: bool = True) -> float:
     """Largest drift of the force-driven player relative to the platform, cm."""
-    r = platform_run(acceleration)
+    r = platform_run(acceleration, feed_forward)
     rel = (r[:, 2] - r[:, 1]) - (r[0, 2] - r[0, 1])
     return float(np.max(np.abs(rel)) * 100.0)
 
 
 def ch1_predicted_drift_cm() -> float:
-    """Drift the drive's time constant predicts: a·τ·T (1 m/s², 0.05 s, 1 s), cm."""
+    """Drift with the ground's acceleration fed forward: the acceleration is read one step late
+    where it starts, a velocity gap a·dt closed with time constant τ: a·dt·τ (1 m/s², 1/120 s,
+    0.05 s), cm."""
+    return 1.0 * DT * ControllerConfig().drive_time * 100.0
+
+
+def ch1_lag_drift_cm() -> float:
+    """Drift of a drive without the feed-forward, a first-order lag: a·τ·T (1 m/s², 0.05 s,
+    1 s), cm."""
     return 1.0 * ControllerConfig().drive_time * 1.0 * 100.0
+
+
+def ch1_lag_simulated_cm() -> float:
+    """The level's drift under the ``ground_acceleration_ignored`` break, cm."""
+    return ch1_player_drift_cm(1.0, feed_forward=False)
 
 
 def ch1_drift_2_cm() -> float:
@@ -1705,6 +1729,8 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch1_platform_travel,
         ch1_player_drift_cm,
         ch1_predicted_drift_cm,
+        ch1_lag_drift_cm,
+        ch1_lag_simulated_cm,
         ch1_drift_2_cm,
         ch1_budget_accel,
         ch1_kinematic_drift,
@@ -1868,19 +1894,31 @@ def _save(fig: Any, path: Path) -> Path:
 
 
 def fig_ch1(path: Path) -> Path:
-    """Drift relative to the platform, and the drive force that carries the player."""
+    """Drift relative to the platform (the kinematic character's, then the player's with and
+    without the feed-forward, in mm), and the drive force that carries the player."""
     r = platform_run()
-    fig, (a, b) = _axes(2)
-    a.plot(r[:, 0], 100 * ((r[:, 2] - r[:, 1]) - (r[0, 2] - r[0, 1])), label="force-driven player")
-    a.plot(r[:, 0], 100 * ((r[:, 3] - r[:, 1]) - (r[0, 3] - r[0, 1])), label="kinematic character")
+    lag = platform_run(feed_forward=False)
+
+    def rel(run: Array, col: int) -> Array:
+        out: Array = (run[:, col] - run[:, 1]) - (run[0, col] - run[0, 1])
+        return out
+
+    fig, (a, b, c) = _axes(3, height=2.6)
+    a.plot(r[:, 0], 100 * rel(r, 2), label="force-driven player")
+    a.plot(r[:, 0], 100 * rel(r, 3), label="kinematic character")
     a.set_ylabel("x relative to platform (cm)")
     a.set_title("moving_platform: who stays on the platform?")
     a.legend()
-    b.plot(r[:, 0], r[:, 4], color="C2", label="drive force on the player")
-    b.axhline(70.0, color="k", ls="--", lw=1, label="m·a = 70 kg · 1 m/s²")
-    b.set_xlabel("time (s)")
-    b.set_ylabel("drive force x (N)")
+    b.plot(r[:, 0], 1000 * rel(r, 2), label="force-driven player")
+    b.plot(lag[:, 0], 1000 * rel(lag, 2), ls=":", color="C3", label="acceleration not fed forward")
+    b.set_ylabel("x relative to platform (mm)")
+    b.set_title("the force-driven player, closer")
     b.legend()
+    c.plot(r[:, 0], r[:, 4], color="C2", label="drive force on the player")
+    c.axhline(70.0, color="k", ls="--", lw=1, label="m·a = 70 kg · 1 m/s²")
+    c.set_xlabel("time (s)")
+    c.set_ylabel("drive force x (N)")
+    c.legend()
     return _save(fig, path)
 
 

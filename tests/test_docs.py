@@ -36,7 +36,12 @@ TOL_LIMIT = 0.01
 """On 2πf·dt: the bisection's resolution (1e-3) plus the slow growth right at the limit."""
 
 TOL_DRIFT = 1e-3
-"""m: the drive's drift against a·τ·T (the lag's own settling adds well under a millimetre)."""
+"""m: the drive's drift without the feed-forward against a·τ·T (the lag's own settling adds well
+under a millimetre)."""
+
+TOL_JERK_REL = 0.05
+"""Relative: the drift with the feed-forward against a·dt·τ (its one-step-late reading where the
+acceleration starts and stops; measured equal to 3 digits, 5 % for the hover's coupling)."""
 
 TOL_LEAP_SHIFT = 1e-9
 """m: the leap's flight never touches the creature, so the landing spot moves by exactly the
@@ -137,10 +142,14 @@ def test_one_command_regenerates_every_figure(
     assert list(figures.FIGURES)[-1] in err
 
 
-def test_exercise_1_drift_is_a_tau_t() -> None:
-    """Chapter 1: the drive is a first-order lag, so the drift is a·τ·T."""
+def test_exercise_1_drift_is_a_dt_tau() -> None:
+    """Chapter 1: with the ground's acceleration fed forward the drift is a·dt·τ; without it
+    the drive is a first-order lag and the drift is a·τ·T."""
     drift = figures.ch1_player_drift_cm() / 100.0
-    assert abs(drift - figures.ch1_predicted_drift_cm() / 100.0) < TOL_DRIFT
+    predicted = figures.ch1_predicted_drift_cm() / 100.0
+    assert abs(drift - predicted) < TOL_JERK_REL * predicted
+    lag = figures.ch1_lag_simulated_cm() / 100.0
+    assert abs(lag - figures.ch1_lag_drift_cm() / 100.0) < TOL_DRIFT
 
 
 def test_exercise_2_ghost_force_is_the_forgotten_damping() -> None:
@@ -174,9 +183,9 @@ def test_exercise_5_stability_limit_is_two_zeta_plus_two_root() -> None:
 
 
 def test_exercise_1_twice_the_acceleration_twice_the_drift() -> None:
-    """Chapter 1's exercise: at 2 m/s² the drift is a·τ·T = 10 cm."""
-    tau = ControllerConfig().drive_time
-    assert abs(figures.ch1_drift_2_cm() / 100.0 - 2.0 * tau * 1.0) < TOL_DRIFT
+    """Chapter 1's exercise: at 2 m/s² the drift is a·dt·τ = 0.083 cm."""
+    predicted = 2.0 * figures.DT * ControllerConfig().drive_time
+    assert abs(figures.ch1_drift_2_cm() / 100.0 - predicted) < TOL_JERK_REL * predicted
 
 
 def test_exercise_4_without_the_spike_stage_the_bounce_check_fails() -> None:
