@@ -362,6 +362,16 @@ def cmd_figures(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_gifs(args: argparse.Namespace) -> int:
+    """Regenerate the seed sequences' animated GIFs (docs/img/gifs) headless; needs the
+    ``view`` extra (pygame-ce, Pillow)."""
+    from playground.view.gallery import make_gifs
+
+    for path in make_gifs(Path(args.out), args.levels or None):
+        print(f"wrote {path} ({path.stat().st_size // 1024} KB)")
+    return 0
+
+
 def cmd_schema(args: argparse.Namespace) -> int:
     """Print the level JSON Schema, or write it to --output."""
     text = schema_text()
@@ -431,6 +441,11 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="docs/img/chapters", metavar="DIR", help="default: %(default)s")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     p.set_defaults(func=cmd_figures)
+
+    p = sub.add_parser("gifs", help="regenerate the seed sequences' animated GIFs (headless)")
+    p.add_argument("levels", nargs="*", metavar="LEVEL", help="default: the seven sequences")
+    p.add_argument("--out", default="docs/img/gifs", metavar="DIR", help="default: %(default)s")
+    p.set_defaults(func=cmd_gifs)
 
     p = sub.add_parser("schema", help="print the level JSON Schema")
     p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")

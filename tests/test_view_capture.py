@@ -93,3 +93,17 @@ def test_a_failed_gif_write_leaves_no_file(tmp_path: Path, monkeypatch: pytest.M
     with pytest.raises(OSError, match="disk full"):
         writer.save(tmp_path / "run.gif")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_gifs_command_writes_one_gif_per_sequence_at_the_gallery_size(tmp_path: Path) -> None:
+    """Law: `playground gifs LEVEL --out DIR` writes DIR/LEVEL.gif: the level's scripted
+    seconds at FPS frames per second, SIZE pixels, looping."""
+    from playground.level import find, load
+    from playground.view.gallery import FPS, SIZE
+
+    assert main(["gifs", "null_enemy", "--out", str(tmp_path / "gifs")]) == 0
+    seconds = load(find("null_enemy")).settings.seconds
+    with Image.open(tmp_path / "gifs" / "null_enemy.gif") as gif:
+        assert gif.size == SIZE
+        assert gif.n_frames == round(seconds * FPS) + 1
+        assert gif.info["duration"] == round(1000 / FPS)

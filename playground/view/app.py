@@ -346,9 +346,13 @@ class App:
         self.size = self.surface.get_size()
         self.font = pygame.font.Font(None, 26)
         self.small = pygame.font.Font(None, 20)
+        self.tiny = pygame.font.Font(None, 16)
         self.hud = Hud(self.font, self.small)
         self.painter = Painter()
         self.show_help = False
+        self.compact = False
+        """Leave out the stage costs, the notes and the overlay panel, and write the legend small
+        (small pictures, GIFs)."""
         self.tuning = TuningPanel(self.small)
         self.paused = False
         self.speed_index = SPEEDS.index(1.0)
@@ -655,14 +659,18 @@ class App:
                 speed=self.speed,
                 paused=self.paused,
                 state=str(state) if state is not None else None,
-                stage_costs=self._costs.means,
-                notes=notes,
+                stage_costs={} if self.compact else self._costs.means,
+                notes=[] if self.compact else notes,
             ),
             self.scope if self.scope.name else None,
         )
         right = self.size[0] - 8
-        panel = self.painter.draw_panel(surf, self.small, (right, 8))
-        legend = self.painter.draw_legend(surf, self.small, (right, panel.bottom + 4))
+        if self.compact:
+            panel = pygame.Rect(right, 8, 0, 0)
+        else:
+            panel = self.painter.draw_panel(surf, self.small, (right, 8))
+        font = self.tiny if self.compact else self.small
+        legend = self.painter.draw_legend(surf, font, (right, panel.bottom + 4))
         self.hud.rects += [panel, legend]
         compass = self.painter.draw_compass(
             surf, self.small, self.camera, (right - 60, legend.bottom + 60)

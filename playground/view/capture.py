@@ -23,6 +23,8 @@ from pathlib import Path
 
 import pygame
 
+from playground.view.draw import COLOURS
+
 __all__ = [
     "GIF_FPS",
     "MAX_SIDE",
@@ -39,9 +41,7 @@ MIN_SIDE = 64  # px: below this the HUD cannot be read at all
 MAX_SIDE = 8192  # px: past 8K a frame is ~200 MB of pixels; a typo, not a wish
 PICTURE_SUFFIXES = (".png", ".bmp", ".tga", ".jpg", ".jpeg")  # what pygame.image.save writes
 GIF_FPS = 20  # frames per second of an animated GIF: 50 ms per frame, a whole GIF delay unit
-GIF_COLOURS = (
-    64  # palette size per GIF frame: the view's flat colours need few; it keeps GIFs small
-)
+GIF_COLOURS = 64  # palette size of a GIF: the view's flat colours need few, and few keep it small
 
 
 def parse_size(text: str) -> tuple[int, int]:
@@ -159,14 +159,21 @@ class GifWriter:
         if not self.frames or self.size is None:
             raise ValueError(f"{path}: no frames to write")
         rgbs = [Image.frombytes("RGB", self.size, data) for data in self.frames]
-        # One palette for every frame (taken from a strip of frames across the run): pixels that
-        # did not change keep the same index, so the GIF stores only what moved.
-        strip = Image.new("RGB", (self.size[0], self.size[1] * min(len(rgbs), 4)))
-        for k in range(strip.height // self.size[1]):
-            strip.paste(
-                rgbs[k * (len(rgbs) - 1) // 3 if len(rgbs) > 1 else 0], (0, k * self.size[1])
-            )
-        palette = strip.quantize(GIF_COLOURS, method=Image.Quantize.MEDIANCUT)
+        # One palette for every frame: pixels that did not change keep their index, so the GIF
+        # stores only what moved. It holds the view's own colours exactly (an arrow covers too few
+        # pixels to win a place in an adaptive palette), the rest adapted to frames across the run.
+        keep = sorted(set(COLOURS.values()))
+        w, h = self.size
+        picks = sorted({k * (len(rgbs) - 1) // 3 for k in range(4)})
+        strip = Image.new("RGB", (w, h * len(picks)))
+        for row, k in enumerate(picks):
+            strip.paste(rgbs[k], (0, row * h))
+        free = GIF_COLOURS - len(keep)
+        adaptive = strip.quantize(free, method=Image.Quantize.MEDIANCUT).getpalette() or []
+        colours = [c for rgb in keep for c in rgb] + adaptive[: 3 * free]
+        colours += colours[:3] * (256 - len(colours) // 3)  # unused entries: a colour in use
+        palette = Image.new("P", (1, 1))
+        palette.putpalette(colours)
         images = [rgb.quantize(palette=palette, dither=Image.Dither.NONE) for rgb in rgbs]
         with _atomic(path) as tmp:
             images[0].save(
