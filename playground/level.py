@@ -48,6 +48,8 @@ from pydantic import (
     field_validator,
 )
 
+from playground import limits
+
 __all__ = [
     "Level",
     "LevelError",
@@ -62,9 +64,15 @@ __all__ = [
 
 # -- plain types ---------------------------------------------------------------------------------
 
-Finite = Annotated[float, Field(allow_inf_nan=False)]
-Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False)]
-NonNegative = Annotated[float, Field(ge=0.0, allow_inf_nan=False)]
+# Every number is bounded (see playground.limits for each bound's reason). A plain number — a
+# length, position, time, angle, rate, tolerance — lies within ±MAX_COORDINATE (1e5): larger is
+# beyond any game-scale level, and sums and products of such numbers stay far from overflow.
+# Quantities with a tighter plausible range (masses, speeds, gravities, forces, stiffnesses,
+# frequencies, dt) say so where they are declared.
+_PLAIN = limits.MAX_COORDINATE
+Finite = Annotated[float, Field(ge=-_PLAIN, le=_PLAIN, allow_inf_nan=False)]
+Positive = Annotated[float, Field(gt=0.0, le=_PLAIN, allow_inf_nan=False)]
+NonNegative = Annotated[float, Field(ge=0.0, le=_PLAIN, allow_inf_nan=False)]
 Unit = Annotated[float, Field(ge=-1.0, le=1.0, allow_inf_nan=False)]
 # Tables are strict (no true -> 1.0, no "10" -> 10, as the JSON Schema says); a TOML array is a
 # list, so fixed-length arrays are the one place a conversion (list -> tuple) is allowed.
@@ -79,6 +87,28 @@ def _whole(value: object) -> object:
 
 
 Whole = Annotated[int, BeforeValidator(_whole)]
+Mass = Annotated[float, Field(ge=limits.MIN_MASS, le=limits.MAX_MASS, allow_inf_nan=False)]
+"""kg: see ``MIN_MASS`` and ``MAX_MASS`` (mass ratios with a 70 kg player)."""
+Moment = Annotated[float, Field(ge=limits.MIN_MOMENT, le=limits.MAX_MOMENT, allow_inf_nan=False)]
+"""kg·m²: 1/I must stay finite, m·L² of the largest body must fit."""
+Speed = Annotated[float, Field(ge=-limits.MAX_SPEED, le=limits.MAX_SPEED, allow_inf_nan=False)]
+"""m/s: faster bodies cross more than their own size per step and tunnel."""
+TurnRate = Annotated[
+    float, Field(ge=-limits.MAX_ANGULAR_SPEED, le=limits.MAX_ANGULAR_SPEED, allow_inf_nan=False)
+]
+"""rad/s: the same tunnelling argument at a metre-sized body's rim."""
+Gravity_ = Annotated[
+    float, Field(ge=-limits.MAX_GRAVITY, le=limits.MAX_GRAVITY, allow_inf_nan=False)
+]
+"""m/s²: at most 100 g, which the contacts and the hover spring still hold at 1/120 s."""
+Force = Annotated[float, Field(gt=0.0, le=limits.MAX_FORCE, allow_inf_nan=False)]
+"""N: keeps F·dt and every sum of forces finite."""
+Stiffness = Annotated[float, Field(gt=0.0, le=limits.MAX_STIFFNESS, allow_inf_nan=False)]
+"""N/m or N·m/rad; stability at the level's dt is checked when the level is built."""
+Damping = Annotated[float, Field(ge=0.0, le=limits.MAX_STIFFNESS, allow_inf_nan=False)]
+"""N·s/m or N·m·s/rad: bounded like a stiffness."""
+Frequency = Annotated[float, Field(gt=0.0, le=limits.MAX_FREQUENCY, allow_inf_nan=False)]
+"""Hz: above half the step rate a motion is not sampled at all."""
 Name = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[A-Za-z_][A-Za-z0-9_\-]*$")]
 
 SCHEMA_ID = (
@@ -103,7 +133,13 @@ class _Model(BaseModel):
 class Settings(_Model):
     """Simulation settings (see :class:`playground.WorldConfig`)."""
 
-    dt: Positive = Field(default=1.0 / 120.0, description="Fixed step, s.")
+    dt: float = Field(
+        default=1.0 / 120.0,
+        ge=limits.MIN_DT,
+        le=limits.MAX_DT,
+        allow_inf_nan=False,
+        description="Fixed step, s (1e-4 … 0.1: see playground.limits).",
+    )
     substeps: Whole = Field(default=1, ge=1, le=64, description="space.step calls per step.")
     iterations: Whole = Field(
         default=10, ge=1, le=1000, description="Solver iterations per substep."
@@ -115,15 +151,17 @@ class Settings(_Model):
     contact_split: bool = Field(
         default=False, description="Split engine forces into contact and constraint readings."
     )
-    seconds: Positive = Field(default=3.0, le=3600.0, description="Length of a run, s.")
+    seconds: Positive = Field(
+        default=3.0, le=limits.MAX_SECONDS, description="Length of a run, s (at most an hour)."
+    )
 
 
 class Perception(_Model):
     """How perceived gravity is filtered (see :class:`playground.Perception`)."""
 
-    min_cutoff: Positive = Field(default=2.0, description="1€ minimum cutoff, Hz.")
+    min_cutoff: Frequency = Field(default=2.0, description="1€ minimum cutoff, Hz.")
     beta: NonNegative = Field(default=0.05, description="1€ speed coefficient.")
-    d_cutoff: Positive = Field(default=1.0, description="1€ derivative cutoff, Hz.")
+    d_cutoff: Frequency = Field(default=1.0, description="1€ derivative cutoff, Hz.")
     spike_filter: bool = Field(default=True, description="Median-of-3 stage before the 1€ filter.")
     up_threshold: Positive = Field(default=1.0, description="Below this |g| (m/s²) up is held.")
 
@@ -165,7 +203,7 @@ class UniformGravity(_Model):
     """The same acceleration everywhere (m/s²)."""
 
     kind: Literal["uniform"] = "uniform"
-    g: Vec = (0.0, -9.81)
+    g: Annotated[tuple[Gravity_, Gravity_], Strict(False)] = (0.0, -9.81)
 
 
 class Turn(_Model):
@@ -180,9 +218,9 @@ class RotatingGravity(_Model):
     """Uniform gravity whose direction turns (rad from +x; −π/2 is down)."""
 
     kind: Literal["rotating"]
-    magnitude: NonNegative = 9.81
+    magnitude: Annotated[float, Field(ge=0.0, le=limits.MAX_GRAVITY)] = 9.81
     angle: Finite = -math.pi / 2
-    rate: Finite = Field(default=0.0, description="Constant turning rate, rad/s.")
+    rate: TurnRate = Field(default=0.0, description="Constant turning rate, rad/s.")
     turns: list[Turn] = Field(default_factory=list)
 
 
@@ -191,7 +229,7 @@ class RadialGravity(_Model):
 
     kind: Literal["radial"]
     center: Vec = (0.0, 0.0)
-    surface_gravity: Finite = 9.81
+    surface_gravity: Gravity_ = 9.81
     radius: Positive = 10.0
     softening: NonNegative = 0.5
 
@@ -300,18 +338,18 @@ class Prop(_Model):
 
     name: Name
     position: Vec
-    mass: Positive
+    mass: Mass
     shapes: list[Shape] = Field(min_length=1)
     angle: Finite = 0.0
-    velocity: Vec = (0.0, 0.0)
-    angular_velocity: Finite = 0.0
-    moment: Positive | None = Field(default=None, description="kg·m²; default from the shapes.")
+    velocity: Annotated[tuple[Speed, Speed], Strict(False)] = (0.0, 0.0)
+    angular_velocity: TurnRate = 0.0
+    moment: Moment | None = Field(default=None, description="kg·m²; default from the shapes.")
 
 
 class Waypoints(_Model):
     kind: Literal["waypoints"]
     points: list[Vec] = Field(min_length=2)
-    speed: Positive = 1.0
+    speed: Annotated[Speed, Field(gt=0.0)] = 1.0
     ease: bool = False
     mode: Literal["loop", "pingpong", "once"] = "pingpong"
     angle: Finite = 0.0
@@ -321,7 +359,7 @@ class Sine(_Model):
     kind: Literal["sine"]
     center: Vec = (0.0, 0.0)
     amplitude: Vec = (1.0, 0.0)
-    frequency: Positive = 0.25
+    frequency: Frequency = 0.25
     phase: Finite = 0.0
     angle: Finite = 0.0
 
@@ -345,7 +383,7 @@ class CirclePath(_Model):
 class Spin(_Model):
     kind: Literal["spin"]
     position: Vec = (0.0, 0.0)
-    rate: Finite = 1.0
+    rate: TurnRate = 1.0
     angle: Finite = 0.0
 
 
@@ -353,7 +391,9 @@ class Elevator(_Model):
     kind: Literal["elevator"]
     start: Vec = (0.0, 0.0)
     axis: Vec = (0.0, 1.0)
-    acceleration: Finite = 1.0
+    acceleration: Annotated[
+        float, Field(ge=-limits.MAX_ACCELERATION, le=limits.MAX_ACCELERATION, allow_inf_nan=False)
+    ] = 1.0
     start_time: Finite = 0.0
     duration: Positive | None = Field(default=None, description="s; default: accelerate forever.")
 
@@ -379,7 +419,7 @@ class MoverModel(_Model):
 class _Joint(_Model):
     a: Name = Field(description="First body (or 'static').")
     b: Name = Field(description="Second body (or 'static').")
-    max_force: Positive | None = Field(default=None, description="N; default unlimited.")
+    max_force: Force | None = Field(default=None, description="N; default unlimited.")
     collide: bool = Field(default=False, description="Let the two bodies collide.")
 
 
@@ -404,8 +444,8 @@ class Spring(_Joint):
     kind: Literal["spring"]
     anchor_a: Vec
     anchor_b: Vec
-    stiffness: Positive = Field(description="N/m.")
-    damping: NonNegative = Field(default=0.0, description="N·s/m.")
+    stiffness: Stiffness = Field(description="N/m.")
+    damping: Damping = Field(default=0.0, description="N·s/m.")
     rest_length: NonNegative | None = Field(
         default=None, description="m; default: the setup distance."
     )
@@ -415,8 +455,8 @@ class RotarySpring(_Joint):
     """A damped torsion spring between the bodies' angles."""
 
     kind: Literal["rotary_spring"]
-    stiffness: Positive = Field(description="N·m/rad.")
-    damping: NonNegative = Field(default=0.0, description="N·m·s/rad.")
+    stiffness: Stiffness = Field(description="N·m/rad.")
+    damping: Damping = Field(default=0.0, description="N·m·s/rad.")
     rest_angle: Finite = 0.0
 
 
@@ -445,8 +485,10 @@ class Actor(_Model):
     name: Name
     position: Vec
     angle: Finite = 0.0
-    velocity: Vec = Field(default=(0.0, 0.0), description="Initial velocity, m/s.")
-    angular_velocity: Finite = Field(default=0.0, description="Initial spin, rad/s.")
+    velocity: Annotated[tuple[Speed, Speed], Strict(False)] = Field(
+        default=(0.0, 0.0), description="Initial velocity, m/s."
+    )
+    angular_velocity: TurnRate = Field(default=0.0, description="Initial spin, rad/s.")
     controller: dict[str, float | bool] = Field(
         default_factory=dict, description="ControllerConfig fields (SI), e.g. mass = 70."
     )
@@ -475,11 +517,31 @@ def _controller_config(params: dict[str, float | bool]) -> Any:
     for key, value in params.items():
         if isinstance(value, float) and not math.isfinite(value):
             raise ValueError(f"{key}: expected a finite number, got {value!r}")
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            low, high = _controller_range(key)
+            if not low <= value <= high:
+                raise ValueError(f"{key}: expected a number in [{low:g}, {high:g}], got {value!r}")
     try:
         config: Any = ControllerConfig
         return config(**params)
     except (TypeError, ValueError) as exc:
         raise ValueError(str(exc)) from None
+
+
+def _controller_range(key: str) -> tuple[float, float]:
+    """The plausible range of a controller parameter, by its unit (see playground.limits); the
+    controller's own checks (positive, below the hover's stability limit…) come after."""
+    if key == "mass":
+        return (limits.MIN_MASS, limits.MAX_MASS)
+    if key.endswith(("_force", "_torque")):
+        return (-limits.MAX_FORCE, limits.MAX_FORCE)
+    if key.endswith("_frequency"):
+        return (-limits.MAX_FREQUENCY, limits.MAX_FREQUENCY)
+    if key.endswith(("_speed", "_spin")):
+        return (-limits.MAX_SPEED, limits.MAX_SPEED)
+    if key.endswith("length") or key in ("height", "radius", "ride_height"):
+        return (-limits.MAX_LENGTH, limits.MAX_LENGTH)
+    return (-_PLAIN, _PLAIN)
 
 
 # -- timelines -----------------------------------------------------------------------------------
@@ -507,6 +569,12 @@ class Input(_Model):
         return v
 
 
+Impulse_ = Annotated[
+    float, Field(ge=-limits.MAX_IMPULSE, le=limits.MAX_IMPULSE, allow_inf_nan=False)
+]
+"""N·s: spread over one step of the smallest dt it stays within MAX_FORCE."""
+
+
 class _Event(_Model):
     t: NonNegative = Field(description="When, s.")
 
@@ -515,7 +583,7 @@ class SetGravity(_Event):
     """Replace the field with uniform gravity ``g`` (m/s²)."""
 
     kind: Literal["set_gravity"]
-    g: Vec
+    g: Annotated[tuple[Gravity_, Gravity_], Strict(False)]
 
 
 class FlipGravity(_Event):
@@ -544,7 +612,10 @@ class BodyGravity(_Event):
 
     kind: Literal["body_gravity"]
     body: Name
-    scale: Finite = 1.0
+    scale: Annotated[
+        float,
+        Field(ge=-limits.MAX_GRAVITY_SCALE, le=limits.MAX_GRAVITY_SCALE, allow_inf_nan=False),
+    ] = 1.0
     direction: Vec | None = None
 
 
@@ -553,7 +624,7 @@ class Impulse(_Event):
 
     kind: Literal["impulse"]
     body: Name
-    impulse: Vec
+    impulse: Annotated[tuple[Impulse_, Impulse_], Strict(False)]
     point: Vec | None = None
 
 
@@ -795,15 +866,16 @@ def _unwrap(tp: Any) -> list[Any]:
     return [tp]
 
 
-def _walk(loc: Sequence[int | str]) -> tuple[set[int | str], type[BaseModel] | None]:
+def _walk(loc: Sequence[int | str]) -> tuple[set[int], type[BaseModel] | None]:
     """Follow a pydantic error location through the models.
 
-    Returns the discriminator tags pydantic put in the location (a key path has no such level)
-    and the model whose table sits at the end of it, if any.
+    Returns the positions of the discriminator tags pydantic put in the location (a key path has
+    no such level; a key may be spelled like a tag, as ``impulse`` in an impulse event) and the
+    model whose table sits at the end of it, if any.
     """
-    tags: set[int | str] = set()
+    tags: set[int] = set()
     current: list[Any] = [Level]
-    for key in loc:
+    for position, key in enumerate(loc):
         nxt: list[Any] = []
         for tp in current:
             alts = _unwrap(tp)
@@ -815,7 +887,7 @@ def _walk(loc: Sequence[int | str]) -> tuple[set[int | str], type[BaseModel] | N
                 and typing.get_args(m.model_fields["kind"].annotation) == (key,)
             ]
             if len(models) > 1 and tagged:
-                tags.add(key)
+                tags.add(position)
                 nxt.extend(tagged)
                 continue
             for alt in alts:
@@ -835,8 +907,8 @@ def _walk(loc: Sequence[int | str]) -> tuple[set[int | str], type[BaseModel] | N
     return tags, None
 
 
-def _path(loc: Sequence[int | str], tags: set[int | str]) -> str:
-    return ".".join(str(k) for k in loc if k not in tags)
+def _path(loc: Sequence[int | str], tags: set[int]) -> str:
+    return ".".join(str(k) for i, k in enumerate(loc) if i not in tags)
 
 
 _TYPE_WORDS = {
@@ -1136,17 +1208,25 @@ def loads(text: str, source: str = "<string>") -> Level:
         raise LevelError(
             source, [Problem("", f"TOML syntax error: {exc}")], line=line, column=column
         ) from None
+    except RecursionError:
+        # tomllib parses nested arrays and inline tables recursively.
+        raise LevelError(source, [_TOO_DEEP]) from None
     return validate(data, source)
+
+
+_TOO_DEEP = Problem("", "document nested too deeply (no level nests more than a few tables)")
 
 
 def validate(data: object, source: str = "<data>") -> Level:
     """Validate an already parsed document (a dict of TOML values)."""
     try:
-        level = Level.model_validate(data)
-    except ValidationError as exc:
-        raise LevelError(source, _problems(exc) + _salvaged_references(data, exc)) from None
+        try:
+            level = Level.model_validate(data)
+        except ValidationError as exc:
+            # Describing the error walks the document again (and may recurse as deep).
+            raise LevelError(source, _problems(exc) + _salvaged_references(data, exc)) from None
     except RecursionError:
-        raise LevelError(source, [Problem("", "document nested too deeply")]) from None
+        raise LevelError(source, [_TOO_DEEP]) from None
     problems = list(_references(level))
     if problems:
         raise LevelError(source, problems)

@@ -23,7 +23,9 @@ __all__ = [
     "MAX_IMPULSE",
     "MAX_LENGTH",
     "MAX_MASS",
+    "MAX_MASS_RATIO",
     "MAX_MOMENT",
+    "MAX_OVERLAP",
     "MAX_SECONDS",
     "MAX_SPEED",
     "MAX_STIFFNESS",
@@ -35,6 +37,7 @@ __all__ = [
     "RUNAWAY_FORCE",
     "RUNAWAY_POSITION",
     "RUNAWAY_SPEED",
+    "SPRING_LIMIT",
 ]
 
 MAX_ZOOM = 1.0e4
@@ -128,3 +131,17 @@ RUNAWAY_SPEED = 1.0e8
 RUNAWAY_FORCE = 1.0e13
 """The runtime guard's bound on a tracked body's force readings, N: :data:`MAX_FORCE` on the
 heaviest body, times a hundred thousand; beyond it a contact or joint is fighting a blow-up."""
+
+MAX_MASS_RATIO = 1.0e3
+"""Largest mass ratio between two bodies joined by a joint or resting on each other at the start.
+pymunk's sequential impulses need of the order of the ratio in iterations to hold such a pair, and
+a level allows at most 1000 iterations: beyond it the light body is crushed or the joint stretches
+whatever the settings."""
+
+MAX_OVERLAP = 0.05
+"""Deepest overlap of two bodies' shapes at the start, m. Deeper, a body was spawned inside another
+and the solver pushes them apart at once (ten times the default collision slop of 5 mm)."""
+
+SPRING_LIMIT = 2.0
+"""A spring integrated by pymunk (force from the position before the step, then the velocity) is
+stable while ω·h < 2, ω = √(k/m) its angular frequency and h the substep."""
