@@ -199,12 +199,10 @@ def _progress_bar(scene: Any, seconds: float, *, enabled: bool) -> None:
 
 def _replay(file: str, name: str, scene: Any) -> float | None:
     """Let a replay drive the scene's player; the seconds it covers (None after an error)."""
-    try:
-        from playground.view.launcher import attach_replay, show_scene
-        from playground.view.replay import Replay, ReplayError
-    except ImportError as exc:
-        print(f"playground run: --replay needs pygame-ce ({exc})", file=sys.stderr)
-        return None
+    # Without pygame-ce this raises ModuleNotFoundError: main() names the extra to install.
+    from playground.view.launcher import attach_replay, show_scene
+    from playground.view.replay import Replay, ReplayError
+
     try:
         replay = Replay.load(file)
         attach_replay(show_scene(name, scene), replay)
@@ -261,7 +259,7 @@ def _level_name(item: str) -> str:
 
 
 def _progress(total: int, desc: str) -> Any:
-    """A tqdm progress bar on stderr (None without tqdm: ``pip install playground[bench]``)."""
+    """A tqdm progress bar on stderr (None if tqdm, a dependency, cannot be imported)."""
     try:
         tqdm = importlib.import_module("tqdm").tqdm
     except ImportError:

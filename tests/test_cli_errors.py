@@ -146,9 +146,17 @@ def test_ctrl_c_during_run_exits_130_and_keeps_the_recording(tmp_path: Path) -> 
     assert steps > 0 and not out.with_name(out.name + ".partial").exists()
 
 
-def test_ctrl_c_during_play_exits_130(tmp_path: Path) -> None:
-    """Ctrl-C during ``play`` (headless, many frames): "interrupted", exit 130."""
+def test_ctrl_c_during_play_exits_130_and_keeps_the_replay(tmp_path: Path) -> None:
+    """Ctrl-C during ``play`` (headless, many frames): "interrupted", exit 130, and the replay
+    of the steps played so far is written."""
     pytest.importorskip("pygame")
-    code, err = _interrupt(["play", "sandbox", "--headless", "--frames", "1000000"], tmp_path)
+    from playground.view.replay import Replay
+
+    out = tmp_path / "session.json"
+    code, err = _interrupt(
+        ["play", "sandbox", "--headless", "--frames", "1000000", "--replay-out", str(out)],
+        tmp_path,
+    )
     assert code == EXIT_INTERRUPTED
     assert "interrupted" in _one_line(err)
+    assert Replay.load(out).steps > 0

@@ -382,4 +382,4 @@ def _progress(total: int) -> Any:
         tqdm = importlib.import_module("tqdm").tqdm
     except ImportError:
         return None
-    return tqdm(total=total, unit="point", desc="accuracy", leave=False)
+    return tqdm(total=total, unit="point", desc="accuracy", leave=False, disable=None)

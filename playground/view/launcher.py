@@ -158,10 +158,17 @@ def play(
             return 2
         pygame.display.set_caption("playground")
     app = App(show_level, level, levels=names, size=size, replay=watch)
-    if window is None or frames is not None:
-        app.run_frames(120 if frames is None else frames, window=window, each=recorder)
-    else:
-        app.run_window(window)
+    try:
+        if window is None or frames is not None:
+            app.run_frames(120 if frames is None else frames, window=window, each=recorder)
+        else:
+            app.run_window(window)
+    except KeyboardInterrupt:
+        # Ctrl-C ends the session, not its replay: save what was played, then report it.
+        played = app.replays()
+        if replay_out is not None and played:
+            played[-1].save(replay_out)
+        raise
     if shot is not None:
         app.screenshot(shot)
     if movie is not None and recorder is not None:
