@@ -28,12 +28,16 @@ ok      incline: Incline
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import json
 import math
+import signal
 import sys
+import threading
 import time
-from collections.abc import Callable, Sequence
+import types
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -465,7 +469,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     func: Command = args.func
     who = f"playground {args.command}"
     try:
-        return func(args)
+        with _interruptible():
+            return func(args)
     except KeyboardInterrupt:
         print(f"{who}: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
@@ -482,6 +487,37 @@ def main(argv: Sequence[str] | None = None) -> int:
         where = f"{exc.filename}: " if exc.filename is not None else ""
         print(f"{who}: {where}{exc.strerror or exc}", file=sys.stderr)
         return EXIT_USAGE
+
+
+INTERRUPT_RETRY_S = 0.002
+"""s before a Ctrl-C that arrived inside a pymunk callback is delivered again."""
+
+
+def _on_interrupt(signum: int, frame: types.FrameType | None) -> None:
+    """Raise KeyboardInterrupt, unless Python is inside a pymunk callback (called from C through
+    cffi, which would print the exception and drop it): then try again in a moment."""
+    f = frame
+    while f is not None:
+        if f.f_globals.get("__name__") == "pymunk._callbacks":
+            signal.setitimer(signal.ITIMER_REAL, INTERRUPT_RETRY_S)
+            return
+        f = f.f_back
+    raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def _interruptible() -> Iterator[None]:
+    """Ctrl-C (and its retry timer) through :func:`_on_interrupt` while a command runs."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {s: signal.signal(s, _on_interrupt) for s in (signal.SIGINT, signal.SIGALRM)}
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        for s, handler in previous.items():
+            signal.signal(s, handler)
 
 
 def _missing(exc: ModuleNotFoundError) -> str:

@@ -18,7 +18,7 @@ from playground.recording import read
 INTERRUPT_AFTER = 1.0
 """s after the command is inside ``main``: long enough to be in the middle of its work."""
 WAIT_READY = 120.0
-"""s to wait for the child to reach ``main`` on a loaded machine before giving up."""
+"""s to wait for the child to stop after Ctrl-C on a loaded machine before giving up."""
 
 
 def _one_line(err: str) -> str:
@@ -125,13 +125,15 @@ def _interrupt(args: list[str], cwd: Path) -> tuple[int, str]:
         stderr=subprocess.PIPE,
         text=True,
     )
-    assert child.stdout is not None
-    deadline = time.monotonic() + WAIT_READY
-    assert child.stdout.readline().strip() == "ready"
-    assert time.monotonic() < deadline
-    time.sleep(INTERRUPT_AFTER)
-    child.send_signal(signal.SIGINT)
-    _, err = child.communicate(timeout=WAIT_READY)
+    try:
+        assert child.stdout is not None
+        assert child.stdout.readline().strip() == "ready"
+        time.sleep(INTERRUPT_AFTER)
+        child.send_signal(signal.SIGINT)
+        _, err = child.communicate(timeout=WAIT_READY)
+    finally:
+        child.kill()
+        child.wait()
     return child.returncode, err
 
 
@@ -160,3 +162,31 @@ def test_ctrl_c_during_play_exits_130_and_keeps_the_replay(tmp_path: Path) -> No
     assert code == EXIT_INTERRUPTED
     assert "interrupted" in _one_line(err)
     assert Replay.load(out).steps > 0
+
+
+def test_ctrl_c_inside_a_pymunk_callback_is_not_lost(capfd: pytest.CaptureFixture[str]) -> None:
+    """A Ctrl-C that lands while Python runs inside a pymunk callback (called from C through
+    cffi, which would print the KeyboardInterrupt and drop it) is delivered again just after:
+    the command still stops, and no cffi traceback is printed."""
+    import pymunk
+
+    from playground.cli import _interruptible
+
+    space = pymunk.Space()
+    space.gravity = (0.0, -9.81)
+    box = pymunk.Body(1.0, 1.0)
+    box.position = (0.0, 0.49)
+    space.add(box, pymunk.Poly.create_box(box, (1.0, 1.0)))
+    space.add(pymunk.Segment(space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.0))
+    space.step(1.0 / 120.0)
+    visited: list[bool] = []
+
+    def visit(arbiter: pymunk.Arbiter) -> None:
+        os.kill(os.getpid(), signal.SIGINT)
+        visited.append(True)
+
+    with pytest.raises(KeyboardInterrupt), _interruptible():
+        box.each_arbiter(visit)
+        assert visited == [True]
+        time.sleep(INTERRUPT_AFTER)
+    assert "Traceback" not in capfd.readouterr().err
