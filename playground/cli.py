@@ -507,8 +507,15 @@ def _on_interrupt(signum: int, frame: types.FrameType | None) -> None:
 
 @contextlib.contextmanager
 def _interruptible() -> Iterator[None]:
-    """Ctrl-C (and its retry timer) through :func:`_on_interrupt` while a command runs."""
-    if threading.current_thread() is not threading.main_thread():
+    """Ctrl-C (and its retry timer) through :func:`_on_interrupt` while a command runs.
+
+    A process started with SIGINT ignored (``nohup``, a background job of a script) keeps
+    ignoring it.
+    """
+    if (
+        threading.current_thread() is not threading.main_thread()
+        or signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    ):
         yield
         return
     previous = {s: signal.signal(s, _on_interrupt) for s in (signal.SIGINT, signal.SIGALRM)}

@@ -111,8 +111,10 @@ def test_existing_recording_is_kept_without_force(tmp_path: Path) -> None:
 def _interrupt(args: list[str], cwd: Path) -> tuple[int, str]:
     """Start the command, wait until it is inside ``main``, press Ctrl-C (SIGINT)."""
     code = (
-        "import sys\n"
+        "import signal, sys\n"
         "from playground.cli import main\n"
+        # As in a terminal: a test runner may have started us with SIGINT ignored.
+        "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
         "print('ready', flush=True)\n"
         f"sys.exit(main({args!r}))\n"
     )
@@ -185,8 +187,13 @@ def test_ctrl_c_inside_a_pymunk_callback_is_not_lost(capfd: pytest.CaptureFixtur
         os.kill(os.getpid(), signal.SIGINT)
         visited.append(True)
 
-    with pytest.raises(KeyboardInterrupt), _interruptible():
-        box.each_arbiter(visit)
-        assert visited == [True]
-        time.sleep(INTERRUPT_AFTER)
+    # As in a terminal: the test runner may have been started with SIGINT ignored.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        with pytest.raises(KeyboardInterrupt), _interruptible():
+            box.each_arbiter(visit)
+            assert visited == [True]
+            time.sleep(INTERRUPT_AFTER)
+    finally:
+        signal.signal(signal.SIGINT, previous)
     assert "Traceback" not in capfd.readouterr().err
