@@ -63,7 +63,8 @@ class ControllerConfig:
     """Body, sensing and force budgets; defaults fit a 70 kg, 1.8 m person.
 
     Attributes:
-        mass: kg.
+        mass: kg, the body's mass when it is built (``World.set_mass`` may change it later: the
+            controller follows the body's mass, see :attr:`Controller.mass`).
         height: capsule length, end to end, m.
         radius: capsule radius, m (less than half the height).
         lock_rotation: infinite moment of inertia: the capsule never tips (no balance needed).
@@ -306,8 +307,7 @@ class Controller:
         world.add(name, body, shape)
         world.track(name)
 
-        self._k = config.mass * omega * omega
-        self._c = 2.0 * config.hover_damping * config.mass * omega
+        self._omega = omega
         self._cos_slope = math.cos(config.max_slope)
         self._wb = TWO_PI * config.balance_frequency
         self._up_threshold = world.config.perception.up_threshold
@@ -352,8 +352,7 @@ class Controller:
         config = dataclasses.replace(self.config, hover_frequency=frequency, hover_damping=damping)
         omega = _stable_hover(config, self.world.config.dt)
         self.config = config
-        self._k = config.mass * omega * omega
-        self._c = 2.0 * config.hover_damping * config.mass * omega
+        self._omega = omega
 
     def remove(self) -> None:
         """Take the controller out of its world: its grip, body and shape go; its hooks stay
@@ -365,6 +364,23 @@ class Controller:
         self.removed = True
 
     # -- reading ---------------------------------------------------------------------------------
+
+    @property
+    def mass(self) -> float:
+        """The body's mass now, kg: ``config.mass`` until ``World.set_mass`` changes it. The
+        hover's stiffness and damping, its weight feed-forward, the drive, the air steering and
+        the jump all use it, so the spring keeps its frequency and the ride height its value."""
+        return float(self.body.mass)
+
+    @property
+    def hover_stiffness(self) -> float:
+        """The hover spring's stiffness k = m·(2πf)², N/m, for the mass now."""
+        return self.mass * self._omega * self._omega
+
+    @property
+    def hover_damping_coefficient(self) -> float:
+        """The hover's damping c = 2ζ·m·2πf, N·s/m, for the mass now."""
+        return 2.0 * self.config.hover_damping * self.mass * self._omega
 
     @property
     def axis(self) -> Vec:
@@ -671,9 +687,11 @@ class Controller:
         # The weight felt in the ground's frame (gravity minus the frame's acceleration: inside a
         # spinning ring, the centrifugal m·ω²·r) as feed-forward: it rests exactly at ride height.
         ax, ay = hit.frame_acceleration
-        weight = cfg.mass * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
+        m = self.mass
+        weight = m * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
         wc = world.config
-        spring = hover_spring(self._k, self._c, cfg.mass, target - height, v_n, wc.dt, wc.substeps)
+        k, c = self.hover_stiffness, self.hover_damping_coefficient
+        spring = hover_spring(k, c, m, target - height, v_n, wc.dt, wc.substeps)
         f = min(cfg.hover_force, max(0.0, weight + spring))
         if f > 0.0:
             fx, fy = f * nx, f * ny
@@ -711,7 +729,7 @@ class Controller:
             (gx - ax) * tx + (gy - ay) * ty
         )
         budget = min(cfg.ground_force, cfg.traction * hover)
-        f = max(-budget, min(budget, cfg.mass * accel))
+        f = max(-budget, min(budget, self.mass * accel))
         if f == 0.0:
             return _ZERO
         fx, fy = f * tx, f * ty
@@ -724,7 +742,7 @@ class Controller:
         cfg = self.config
         tx, ty = uy, -ux
         vx, vy = self.body.velocity
-        f = cfg.mass * (move * cfg.max_speed - (vx * tx + vy * ty)) / max(cfg.drive_time, dt)
+        f = self.mass * (move * cfg.max_speed - (vx * tx + vy * ty)) / max(cfg.drive_time, dt)
         if f * move <= 0.0:
             return _ZERO
         f = max(-cfg.air_force, min(cfg.air_force, f))
@@ -775,7 +793,8 @@ class Controller:
         self._grounded_at = -math.inf
         if dv <= 0.0:
             return False
-        jx, jy = cfg.mass * dv * ux, cfg.mass * dv * uy
+        m = self.mass
+        jx, jy = m * dv * ux, m * dv * uy
         world.apply_impulse(self.body, (jx, jy), category=Category.SUPPORT)
         if ground is not None:
             world.apply_impulse(

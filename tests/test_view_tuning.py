@@ -61,8 +61,8 @@ def test_hover_sliders_retune_the_players_spring_at_the_next_step() -> None:
     assert ctrl.config.hover_frequency == f != before
     assert ctrl.config.hover_damping == zeta == pytest.approx(0.5, abs=0.02)
     m, w = ctrl.config.mass, 2.0 * math.pi * f
-    assert ctrl._k == pytest.approx(m * w * w, rel=1e-12)
-    assert ctrl._c == pytest.approx(2.0 * zeta * m * w, rel=1e-12)
+    assert ctrl.hover_stiffness == pytest.approx(m * w * w, rel=1e-12)
+    assert ctrl.hover_damping_coefficient == pytest.approx(2.0 * zeta * m * w, rel=1e-12)
 
 
 def test_hover_frequency_stops_below_its_stability_limit_and_the_limit_is_drawn() -> None:
