@@ -769,9 +769,9 @@ class Controller:
             self._saturated += dt
         else:
             self._saturated = 0.0
-        world.ledger.add_torque(body, torque, Category.APPLIED)
+        world.apply_torque(body, torque, category=Category.APPLIED)
         if hit is not None and hit.body.body_type == pymunk.Body.DYNAMIC:
-            world.ledger.add_torque(hit.body, -torque, Category.SUPPORT)
+            world.apply_torque(hit.body, -torque, category=Category.SUPPORT)
         return torque
 
     def _touching(self) -> bool:

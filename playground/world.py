@@ -92,8 +92,11 @@ class WorldConfig:
 
     Attributes:
         dt: the fixed step, s, within [``MIN_DT``, ``MAX_DT``] of :mod:`playground.limits`.
-        substeps: ``space.step`` calls per step (each of dt/substeps); forces are re-applied
-            before each because pymunk clears them.
+        substeps: ``space.step`` calls per step (each of dt/substeps). Every force and torque
+            on a body when the step starts acts for the whole step, as over one
+            ``space.step(dt)``: those applied through the world and those set straight on a
+            pymunk body (``body.force``), tracked or not. pymunk clears forces after each
+            ``space.step``, so the world re-applies them before each substep.
         iterations: the contact/joint solver's iterations per substep.
         damping: fraction of velocity kept after one second (pymunk's convention; 1 = none).
         collision_slop: allowed overlap, m. pymunk's default 0.1 is meant for pixels: in metres
@@ -161,10 +164,13 @@ class World:
 
     Bodies are added by name (:meth:`add`); the world registers masses for per-body gravity and
     tracks forces only for bodies passed to :meth:`track`. Scripts and controllers hook into the
-    INPUTS, EVENTS, CONTROL and OBSERVE stages with :meth:`on`; all forces go through
-    :meth:`apply_force` so the solver's ledger knows them. The space drops an arbiter as soon as
-    its contact ends (``collision_persistence`` 1), so arbiter impulses are the impulses applied
-    (see :class:`~playground.forces.ForceSolver`).
+    INPUTS, EVENTS, CONTROL and OBSERVE stages with :meth:`on`; forces and torques go through
+    :meth:`apply_force` and :meth:`apply_torque`, so the solver's ledger knows their categories
+    and the step is planned around them (an entry added to :attr:`ledger` directly is flushed only
+    by a step that is not bare). A force set straight on a pymunk body acts too, for the whole
+    step like any other (see ``WorldConfig.substeps``); the solver counts it as APPLIED. The
+    space drops an arbiter as soon as its contact ends (``collision_persistence`` 1), so arbiter
+    impulses are the impulses applied (see :class:`~playground.forces.ForceSolver`).
     """
 
     def __init__(
@@ -813,7 +819,9 @@ class World:
         h = cfg.dt / n
         self.ledger.flush()
         field_force = self._field_force
-        batched = field_force is not None or bool(self.solver.bodies)
+        # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
+        # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
+        batched = field_force is not None or bool(self.solver.bodies) or n > 1
         if batched:
             self._rows.read(self.space)
             if field_force is not None and np.array_equal(self._field_ids, self._rows.ids):
@@ -834,10 +842,7 @@ class World:
                 self.solver.before_step(self._rows.ids, self._rows.state, field_rows)
         for k in range(n):
             if k > 0:
-                if batched:
-                    self._write_forces()
-                else:
-                    self.ledger.flush()
+                self._write_forces()
             # Chipmunk rescales warm starts by h / (its last step) when the length changes.
             rescaled = self._config.contact_split and self.space.current_time_step != h
             self.space.step(h)
