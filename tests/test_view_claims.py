@@ -271,13 +271,20 @@ def test_planet_keeps_the_walker_upright_as_world_up_turns() -> None:
 
 
 def test_rest_support_balances_the_weight() -> None:
-    """rest: the filtered support arrow up is as long as the weight arrow down (one weight)."""
+    """rest: the filtered support arrow up is as long as the weight arrow down (one weight), and
+    the raw support, the same force at rest, is drawn beside it rather than hidden under it."""
     app = at_moment("rest")
     c = screen(app, "player")
     w = weight_px(app, "player")
     up = reach(mask(app, "support_filtered"), c, (0.0, -1.0))
     down = reach(mask(app, "gravity"), c, (0.0, 1.0))
     assert up == pytest.approx(w, rel=0.1) and down == pytest.approx(w, rel=0.1)
+    # Hover (from the feet) and raw support (from the centre) run along one line: both are seen
+    # over their whole length, side by side.
+    for kind, start in (("support", c[1]), ("hover", c[1] + app.camera.pixels(0.95))):
+        hit = mask(app, kind)[int(c[0] - BAND_PX) : int(c[0] + BAND_PX)]
+        rows = hit.any(axis=0)[int(start - w * 0.8) : int(start)]
+        assert rows.mean() >= 0.95, (kind, rows.mean())
 
 
 def test_rotating_room_rolls_the_camera_with_gravity() -> None:

@@ -180,3 +180,27 @@ def test_legend_lists_only_what_is_on_screen() -> None:
     app.camera.centre = (1e4, 1e4)
     app.render()
     assert not app.painter.legend()
+
+
+# -- the help overlay ----------------------------------------------------------------------------
+
+HELP_SHOW_THROUGH = 16  # per channel: what a bright arrow behind the help panel may change in it
+
+
+def test_help_reads_over_a_busy_scene() -> None:
+    """The help panel is nearly opaque: drawing the force arrows behind it or not changes no pixel
+    of it by more than HELP_SHOW_THROUGH, and its text is drawn in the bright text colour."""
+    app = App(_spike_show, "spike", size=SIZE)
+    app.run_frames(10)
+    app.camera.zoom_by(4.0)
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_h))
+    busy = pygame.surfarray.array3d(app.render()).astype(int)
+    rect = app.hud.rects[-1]
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_v))
+    calm = pygame.surfarray.array3d(app.render()).astype(int)
+    assert app.hud.rects[-1] == rect
+    region = (slice(rect.left, rect.right), slice(rect.top, rect.bottom))
+    assert np.abs(busy - calm).max() > 100, "the arrows must lie partly behind the panel"
+    assert np.abs(busy[region] - calm[region]).max() <= HELP_SHOW_THROUGH
+    text = np.abs(busy[region] - np.array(COLOURS["text"])).max(axis=2) <= 8
+    assert text.sum() >= 200
