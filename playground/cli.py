@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import dataclasses
 import importlib
 import json
 import math
@@ -123,6 +124,8 @@ def cmd_run(args: argparse.Namespace) -> int:
             return 2
         seconds = covered if args.seconds is None else seconds
     checks = watch(scene)
+    if args.profile:
+        scene.world.config = dataclasses.replace(scene.world.config, timing=True)
     _progress_bar(scene, seconds, enabled=not args.no_progress)
     start = time.perf_counter()
     try:
@@ -138,6 +141,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     wall = time.perf_counter() - start
     results = checks.results()
     world = scene.world
+    profile = _profile(path, seconds) if args.profile else []
     if args.json:
         bodies: dict[str, Any] = {}
         for name in scene.tracked:
@@ -167,12 +171,40 @@ def cmd_run(args: argparse.Namespace) -> int:
             "checks": [{"name": r.name, "passed": r.passed, "detail": r.detail} for r in results],
             "bodies": bodies,
         }
+        if args.profile:
+            from playground.bench.profiler import stage_costs
+
+            report["profile"] = {
+                "stages": [dataclasses.asdict(c) for c in stage_costs(world)],
+                "functions": [dataclasses.asdict(f) for f in profile],
+            }
         print(json.dumps(report, indent=2))
     else:
         print(f"{level.title}: {world.steps} steps, {world.time:g} s simulated in {wall:.3f} s")
         for r in results:
             print(f"  {'pass' if r.passed else 'FAIL'}  {r.detail}")
+    if args.profile and not args.json:
+        _print_profile(world, profile)
     return 0 if all(r.passed for r in results) else 1
+
+
+def _profile(path: Path, seconds: float) -> list[Any]:
+    """The top functions of a second run of the level under cProfile."""
+    from playground.bench.profiler import top_functions
+    from playground.scene import build
+
+    again = build(load(path))
+    return top_functions(lambda: again.run(seconds))
+
+
+def _print_profile(world: Any, functions: list[Any]) -> None:
+    from playground.bench.profiler import function_table, stage_table
+
+    print(f"\nstages over {world.steps} steps (World.timings):")
+    print(stage_table(world))
+    print("\ntop functions by own time (a second run under cProfile, which slows every Python")
+    print("call: for ranking, not for quoting):")
+    print(function_table(functions))
 
 
 PROGRESS_MIN_STEPS = 2400
@@ -413,6 +445,11 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--replay", metavar="FILE", help="drive the player with a `play` replay")
     p.add_argument("--force", action="store_true", help="overwrite an existing --record file")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    p.add_argument(
+        "--profile",
+        action="store_true",
+        help="print the time of each stage and the top functions (runs the level twice)",
+    )
     p.set_defaults(func=cmd_run)
 
     p = sub.add_parser("faults", help="run levels under the breaks they declare to catch")

@@ -1,4 +1,4 @@
-"""The ``bench`` command line: ``accuracy``, ``overhead`` and ``docs`` subcommands.
+"""The ``bench`` command line: ``accuracy``, ``overhead``, ``performance`` and ``docs`` subcommands.
 
 ``configure`` fills an argparse parser (the ``playground bench`` subcommand uses it too) and
 ``run`` executes the parsed arguments.
@@ -12,12 +12,13 @@ True
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import time
 from pathlib import Path
 
-from playground._preflight import needs, writable
-from playground.bench import overhead, report
+from playground._preflight import UsageError, needs, writable
+from playground.bench import overhead, performance, report
 from playground.bench.accuracy import Result, plan, sweep
 
 __all__ = ["configure", "main", "run"]
@@ -28,12 +29,22 @@ DEFAULT_REPEATS = 5
 QUICK_REPEATS = 2
 """Timed blocks per point with ``--quick``: enough to check the output, not to quote."""
 
+QUICK_LEVELS = ("rest",)
+"""Levels timed with ``--quick``."""
+
+QUICK_SIZES = (10, 1000)
+"""Piles timed with ``--quick``: the smallest and the smallest large size of the goals."""
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
-    """Add the ``accuracy``, ``overhead`` and ``docs`` subcommands to ``parser``."""
-    sub = parser.add_subparsers(dest="bench", required=True, metavar="{accuracy,overhead,docs}")
+    """Add the ``accuracy``, ``overhead``, ``performance`` and ``docs`` subcommands."""
+    sub = parser.add_subparsers(
+        dest="bench", required=True, metavar="{accuracy,overhead,performance,docs}"
+    )
     acc = sub.add_parser("accuracy", help="sweep dt, iterations, estimators and filters")
-    over = sub.add_parser("overhead", help="cost of each stage and effect as bodies grow")
+    over = sub.add_parser(
+        "overhead", help="every level and the pile against the engine, the goals, each effect"
+    )
     for p in (acc, over):
         p.add_argument("--quick", action="store_true", help="a small size for CI (seconds)")
         p.add_argument("--json", action="store_true", help="print every row as JSON on stdout")
@@ -44,6 +55,20 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     for p in (acc, over):
         p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    perf = sub.add_parser("performance", help="write docs/performance.md (measures, or --from)")
+    perf.add_argument(
+        "--out", type=Path, default=Path("docs/performance.md"), help="default: %(default)s"
+    )
+    perf.add_argument(
+        "--from",
+        dest="source",
+        type=Path,
+        default=None,
+        metavar="JSON",
+        help="the output of `bench overhead --json` (default: measure now)",
+    )
+    perf.add_argument("--quick", action="store_true", help="one level, small piles (to try it)")
+    perf.add_argument("--no-progress", action="store_true", help="no progress bar")
     docs = sub.add_parser("docs", help="regenerate docs/accuracy.md, its tables and figures")
     docs.add_argument("dir", type=Path, nargs="?", default=Path("docs"), help="default: docs")
     docs.add_argument("--quick", action="store_true", help="small sizes (to try the command)")
@@ -64,6 +89,9 @@ def _preflight(args: argparse.Namespace) -> None:
     """Output folders and matplotlib checked before a sweep of minutes, not after it."""
     if args.bench == "docs":
         needs("matplotlib", "bench docs")
+        return
+    if args.bench == "performance":
+        writable("--out", args.out)
         return
     if args.csv is not None:
         writable("--csv", args.csv)
@@ -96,13 +124,45 @@ def run(args: argparse.Namespace) -> int:
             report.accuracy_figure(rows, args.figure)
         print(report.to_json(rows) if args.json else report.accuracy_markdown(rows))
         return 0
+    if args.bench == "performance":
+        if args.source is not None:
+            try:
+                data = json.loads(args.source.read_text(encoding="utf-8"))
+                m = performance.from_dict(data, source=str(args.source))
+            except (json.JSONDecodeError, ValueError) as exc:
+                raise UsageError(f"--from: {exc}") from None
+        else:
+            m = _measure(args.quick, progress, "playground bench performance")
+        args.out.write_text(performance.performance_doc(m), encoding="utf-8")
+        print(f"wrote {args.out}", file=sys.stderr)
+        return 0
+    command = "playground bench overhead" + (" --quick" if args.quick else "") + " --json"
+    m = _measure(args.quick, progress, command)
     rows_o = overhead.profile(quick=args.quick, progress=progress)
     if args.csv is not None:
         args.csv.write_text(report.to_csv(rows_o), encoding="utf-8")
     if args.figure is not None:
         overhead.overhead_figure(rows_o, args.figure)
-    print(report.to_json(rows_o) if args.json else overhead.overhead_markdown(rows_o))
+    if args.json:
+        data = {**m.to_dict(), "effects": json.loads(report.to_json(rows_o))}
+        print(json.dumps(data, indent=1, ensure_ascii=False))
+    else:
+        print(performance.summary_markdown(m) + "\n" + overhead.overhead_markdown(rows_o))
     return 0
+
+
+def _measure(quick: bool, progress: bool, command: str) -> performance.Measurement:
+    """The levels, the piles and the goals (``quick``: one level, two piles, 2 blocks)."""
+    if quick:
+        return performance.measure(
+            levels=QUICK_LEVELS,
+            sizes=QUICK_SIZES,
+            field_bodies=QUICK_SIZES[-1],
+            repeats=QUICK_REPEATS,
+            progress=progress,
+            command=command,
+        )
+    return performance.measure(progress=progress, command=command)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import math
 import statistics
-import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -23,6 +22,8 @@ from typing import Any
 
 import pymunk
 
+from playground.bench.blocks import interleave
+from playground.bench.pile import floor_length, pile_space, pile_world
 from playground.controller import Controller
 from playground.gravity import GravityRule, Radial, RotatingRoom, Turn
 from playground.movers import Sine
@@ -48,53 +49,8 @@ SIZES = (10, 30, 100, 300, 1000, 3000)
 QUICK_SIZES = (10, 100)
 """Body counts profiled with ``quick``."""
 
-BOX = 0.5
-"""Edge of every box, m."""
-
-COLUMN = 5
-"""Boxes per column of the pile."""
-
 MOVERS = 10
 """Kinematic platforms in the "movers" effect."""
-
-BLOCK_SECONDS = 0.005
-"""Wall time aimed at per timed block, s; the cost is the median over blocks."""
-
-
-def _positions(n: int) -> list[tuple[float, float]]:
-    """Box centres: columns of :data:`COLUMN` boxes, 0.1 m apart, resting on y = 0."""
-    return [((i // COLUMN) * (BOX + 0.1), BOX / 2 + (i % COLUMN) * BOX) for i in range(n)]
-
-
-def _floor_length(n: int) -> float:
-    return (n // COLUMN + 1) * (BOX + 0.1) + 2.0
-
-
-def _bare(n: int, config: WorldConfig) -> pymunk.Space:
-    """The pile in a bare space, set up as :class:`World` sets up its space."""
-    space = pymunk.Space()
-    space.iterations = config.iterations
-    space.collision_slop = config.collision_slop
-    space.gravity = (0.0, -9.81)
-    seg = pymunk.Segment(space.static_body, (-2.0, -0.05), (_floor_length(n), -0.05), 0.05)
-    seg.friction = 1.0
-    space.add(seg)
-    for x, y in _positions(n):
-        body = pymunk.Body(1.0, pymunk.moment_for_box(1.0, (BOX, BOX)))
-        body.position = (x, y)
-        shape = pymunk.Poly.create_box(body, (BOX, BOX))
-        shape.friction = 0.8
-        shape.elasticity = 0.0
-        space.add(body, shape)
-    return space
-
-
-def _world(n: int, config: WorldConfig) -> World:
-    world = World(config)
-    world.add_static_segment((-2.0, -0.05), (_floor_length(n), -0.05), radius=0.05)
-    for i, p in enumerate(_positions(n)):
-        world.add_box(f"box{i}", mass=1.0, size=(BOX, BOX), position=p)
-    return world
 
 
 # Each effect keeps the pile's motion the same as the bare space's, so that the difference is
@@ -109,7 +65,7 @@ def _rotating_room(world: World, n: int) -> None:
 
 def _radial(world: World, n: int) -> None:
     # A planet so large that its surface is flat under the pile (tilt < 0.2° at its ends).
-    middle = _floor_length(n) / 2.0
+    middle = floor_length(n) / 2.0
     world.gravity = Radial(center=(middle, -1e5), radius=1e5, softening=0.0)
 
 
@@ -199,27 +155,8 @@ def _time_blocks(
     adjacent blocks (robust to load drifting during the run); and the ratio of the fastest
     blocks (``timeit``'s best-of: robust to bursts of load on a shared machine)."""
     dt = world.config.dt
-    t0 = time.perf_counter()
-    world.step()
-    bare.step(dt)
-    per = max(time.perf_counter() - t0, 1e-6)
-    steps = max(3, min(200, round(2.0 * BLOCK_SECONDS / per)))
-    ours, theirs = [], []
-    for k in range(repeats):
-        # Alternate which goes first, so neither always inherits the other's cache or a burst.
-        for first in (k % 2 == 0, k % 2 == 1):
-            t0 = time.perf_counter()
-            if first:
-                for _ in range(steps):
-                    world.step()
-                ours.append((time.perf_counter() - t0) / steps)
-            else:
-                for _ in range(steps):
-                    bare.step(dt)
-                theirs.append((time.perf_counter() - t0) / steps)
-    ratio = statistics.median(a / b for a, b in zip(ours, theirs, strict=True))
-    best = min(ours) / min(theirs)
-    return 1e6 * statistics.median(ours), 1e6 * statistics.median(theirs), ratio, best
+    t = interleave(world.step, lambda: bare.step(dt), repeats=repeats)
+    return 1e6 * t.a_median, 1e6 * t.b_median, t.ratio, t.best
 
 
 def _stage_means(world: World, steps: int) -> dict[Stage, float]:
@@ -262,11 +199,11 @@ def profile(
             if bar is not None:
                 bar.update(1)
             config = WorldConfig(contact_split=effect.startswith("contact split"))
-            world = _world(n, config)
+            world = pile_world(n, config)
             setup = EFFECTS[effect]
             if setup is not None:
                 setup(world, n)
-            bare = _bare(n, config)
+            bare = pile_space(n, config)
             for _ in range(settle_steps):
                 world.step()
                 bare.step(config.dt)
@@ -317,19 +254,10 @@ def fixed_cost(repeats: int = 9, steps: int = 2000) -> tuple[float, float]:
     """(world, bare pymunk) µs per step for a scene with nothing but a static floor: the fixed
     Python cost of the world's step, medians over interleaved blocks."""
     config = WorldConfig()
-    world = _world(0, config)
-    bare = _bare(0, config)
-    ours, theirs = [], []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        for _ in range(steps):
-            world.step()
-        ours.append((time.perf_counter() - t0) / steps)
-        t0 = time.perf_counter()
-        for _ in range(steps):
-            bare.step(config.dt)
-        theirs.append((time.perf_counter() - t0) / steps)
-    return 1e6 * statistics.median(ours), 1e6 * statistics.median(theirs)
+    world = pile_world(0, config)
+    bare = pile_space(0, config)
+    t = interleave(world.step, lambda: bare.step(config.dt), repeats=repeats, steps=steps)
+    return 1e6 * t.a_median, 1e6 * t.b_median
 
 
 def _table(header: Sequence[str], body: Sequence[Sequence[str]]) -> str:
