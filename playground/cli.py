@@ -47,6 +47,7 @@ from playground._preflight import UsageError, writable
 from playground.bench import cli as bench_cli
 from playground.guard import RunawayError
 from playground.level import LevelError, find, load, schema, shipped
+from playground.limits import MAX_DT, MAX_SECONDS, MAX_TIME, MIN_DT
 
 __all__ = ["EXIT_FAILED", "EXIT_INTERRUPTED", "EXIT_OK", "EXIT_USAGE", "main", "parser"]
 
@@ -95,6 +96,10 @@ def cmd_check(args: argparse.Namespace) -> int:
     return 1 if failed else 0
 
 
+def _num(x: float) -> float | None:
+    return float(x) if math.isfinite(x) else None
+
+
 def _vec(v: Sequence[float]) -> list[float | None] | None:
     out = [float(x) if math.isfinite(x) else None for x in v]
     return None if all(x is None for x in out) else out
@@ -115,9 +120,12 @@ def cmd_run(args: argparse.Namespace) -> int:
     level = load(path)
     scene = build(level)
     seconds = level.settings.seconds if args.seconds is None else args.seconds
-    if not (math.isfinite(seconds) and seconds >= 0):
-        print(f"playground run: --seconds: expected a number >= 0, got {seconds}", file=sys.stderr)
-        return 2
+    longest = MAX_TIME if args.long else MAX_SECONDS
+    if not (math.isfinite(seconds) and 0 <= seconds <= longest):
+        more = "" if args.long else f" (up to {MAX_TIME:g} s with --long)"
+        raise UsageError(
+            f"--seconds: expected a number of seconds in [0, {longest:g}]{more}, got {seconds:g}"
+        )
     if args.replay is not None:
         covered = _replay(args.replay, path.stem, scene)
         if covered is None:
@@ -151,7 +159,7 @@ def cmd_run(args: argparse.Namespace) -> int:
                 "mass": body.mass,
                 "position": _vec(body.position),
                 "velocity": _vec(body.velocity),
-                "angle": body.angle,
+                "angle": _num(body.angle),
                 "state": scene.state(name),
                 "force": {
                     "engine": _vec(f.engine),
@@ -178,7 +186,8 @@ def cmd_run(args: argparse.Namespace) -> int:
                 "stages": [dataclasses.asdict(c) for c in stage_costs(world)],
                 "functions": [dataclasses.asdict(f) for f in profile],
             }
-        print(json.dumps(report, indent=2))
+        # Strict JSON: every float went through _vec or _num (None where not finite).
+        print(json.dumps(report, indent=2, allow_nan=False))
     else:
         print(f"{level.title}: {world.steps} steps, {world.time:g} s simulated in {wall:.3f} s")
         for r in results:
@@ -439,7 +448,15 @@ def parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("run", help="run a level headless and report its checks")
     p.add_argument("level", metavar="LEVEL", help="a level file or a shipped level's name")
-    p.add_argument("--seconds", type=float, help="simulated seconds (default: the level's)")
+    p.add_argument(
+        "--seconds",
+        type=float,
+        help=f"simulated seconds, 0 … {MAX_SECONDS:g} (default: the level's; dt is the level's, "
+        f"{MIN_DT:g} … {MAX_DT:g} s)",
+    )
+    p.add_argument(
+        "--long", action="store_true", help=f"allow --seconds up to {MAX_TIME:g} (a day)"
+    )
     p.add_argument("--json", action="store_true", help="print one JSON object (see docs)")
     p.add_argument("--record", metavar="FILE", help="record every step to FILE (.csv or .npz)")
     p.add_argument("--replay", metavar="FILE", help="drive the player with a `play` replay")

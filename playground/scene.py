@@ -146,7 +146,7 @@ def _build(level: Level) -> Scene:
         if present:
             world.track(*present, perceive=level.tracking.perceive)
     for event in level.events:
-        world.at(event.t, _event(level, event))
+        world.at(event.t, _event(level, event, scene.controllers))
     problems = list(_physical_problems(level, world, joints))
     if problems:
         raise LevelError(level.title, problems)
@@ -459,7 +459,9 @@ def _joint(world: World, model: JointModel) -> pymunk.Constraint:
     return joint
 
 
-def _event(level: Level, event: Event) -> Callable[[World], None]:
+def _event(
+    level: Level, event: Event, controllers: dict[str, Controller]
+) -> Callable[[World], None]:
     """The world event for one entry of the level's timeline."""
 
     def run(world: World) -> None:
@@ -484,6 +486,11 @@ def _event(level: Level, event: Event) -> Callable[[World], None]:
             if event.prop.name in level.tracking.bodies:
                 world.track(event.prop.name, perceive=level.tracking.perceive)
         elif isinstance(event, Remove):
-            world.remove(event.body)
+            # An actor goes with its controller (which then does nothing), not from under it.
+            ctrl = controllers.get(event.body)
+            if ctrl is not None:
+                ctrl.remove()
+            else:
+                world.remove(event.body)
 
     return run

@@ -688,7 +688,10 @@ class World:
 
     def run(self, seconds: float) -> None:
         """Step for ``seconds`` of simulated time (rounded to whole steps)."""
-        for _ in range(round(seconds / self.config.dt)):
+        steps = seconds / self.config.dt
+        if not (math.isfinite(steps) and steps >= 0.0):
+            raise ValueError(f"seconds: expected a finite number of seconds >= 0, got {seconds!r}")
+        for _ in range(round(steps)):
             self.step()
 
     @staticmethod

@@ -262,7 +262,7 @@ class Session:
         """The enemy closest to the player whose gravity is not nullified yet (what X acts on),
         or None."""
         p = self.show.player
-        if p is None:
+        if p is None or p not in self.world.names:
             return None
         here = self.world.body(p).position
         roles = roles_of(self.show)
@@ -276,6 +276,8 @@ class Session:
     def input_hook(self, world: World) -> None:
         """INPUTS stage: the player's intent for this step (keyboard or replay), recorded."""
         assert self.show.player is not None and self.recorder is not None
+        if self.show.player not in world.names:
+            return  # an event took the player out: nobody to steer
         if self.playback is not None:
             intent = self.playback.intent_at(world.steps)
         elif self.script is not None and not self.keyboard.touched:

@@ -24,6 +24,11 @@ Vec = tuple[float, float]
 MIN_ZOOM = 2.0  # px/m: a 1 km level still fits a window
 MAX_ZOOM = 1000.0  # px/m: a 1 mm detail is still a pixel
 
+CENTRE_LIMIT = 1.0e9
+"""m: the farthest the camera looks. A body flying off drags the camera at most this far, where a
+float still resolves 1e-7 m: near 1e16 m adding the grid's 1 m spacing changes nothing, and the
+grid loop would never end."""
+
 
 class Camera:
     """World (m, y up) ↔ screen (px, y down), with follow, zoom and roll.
@@ -52,12 +57,34 @@ class Camera:
             raise ValueError(f"pixels_per_metre: expected a number > 0, got {pixels_per_metre!r}")
         self.size = (int(size[0]), int(size[1]))
         self.zoom = min(max(float(pixels_per_metre), MIN_ZOOM), MAX_ZOOM)
+        self._centre: Vec = (0.0, 0.0)
         self.centre = (float(centre[0]), float(centre[1]))
         self.roll = 0.0
         self.follow_time = follow_time
         self.roll_time = roll_time
         self._cos = 1.0
         self._sin = 0.0
+
+    @property
+    def centre(self) -> Vec:
+        """The world point at the middle of the screen, m, within ±:data:`CENTRE_LIMIT`; a
+        non-finite centre is ignored (the camera stays where it was).
+
+        >>> cam = Camera(size=(10, 10))
+        >>> cam.centre = (1e300, float("nan"))
+        >>> cam.centre
+        (1000000000.0, 0.0)
+        """
+        return self._centre
+
+    @centre.setter
+    def centre(self, value: Vec) -> None:
+        x, y = (float(v) for v in value)
+        old = self._centre
+        self._centre = (
+            min(max(x, -CENTRE_LIMIT), CENTRE_LIMIT) if math.isfinite(x) else old[0],
+            min(max(y, -CENTRE_LIMIT), CENTRE_LIMIT) if math.isfinite(y) else old[1],
+        )
 
     # -- the transform ---------------------------------------------------------------------------
 

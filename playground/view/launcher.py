@@ -121,6 +121,7 @@ def play(
     instead of the keyboard. On exit the player's inputs since the last (re)start are written to
     ``replay_out`` if given.
     """
+    from playground.guard import RunawayError
     from playground.level import LevelError
 
     try:
@@ -158,6 +159,7 @@ def play(
             return 2
         pygame.display.set_caption("playground")
     app = App(show_level, level, levels=names, size=size, replay=watch)
+    code = 0
     try:
         if window is None or frames is not None:
             app.run_frames(120 if frames is None else frames, window=window, each=recorder)
@@ -169,6 +171,10 @@ def play(
         if replay_out is not None and played:
             played[-1].save(replay_out)
         raise
+    except RunawayError as exc:
+        # One line, and what was played so far is still saved below (pictures, replay).
+        print(f"playground play: {level}: {exc}", file=sys.stderr)
+        code = 1
     if shot is not None:
         app.screenshot(shot)
     if movie is not None and recorder is not None:
@@ -185,7 +191,7 @@ def play(
                 )
     if window is not None:
         pygame.display.quit()
-    return 0
+    return code
 
 
 def _open_window(size: tuple[int, int]) -> pygame.Surface | None:
