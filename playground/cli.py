@@ -186,7 +186,7 @@ def cmd_run(args: argparse.Namespace) -> int:
                 "stages": [dataclasses.asdict(c) for c in stage_costs(world)],
                 "functions": [dataclasses.asdict(f) for f in profile],
             }
-        # Strict JSON: every float went through _vec or _num (None where not finite).
+        # Strict JSON: no NaN or Infinity slips out (vectors and angles go through _vec, _num).
         print(json.dumps(report, indent=2, allow_nan=False))
     else:
         print(f"{level.title}: {world.steps} steps, {world.time:g} s simulated in {wall:.3f} s")
