@@ -197,3 +197,20 @@ def test_ctrl_c_inside_a_pymunk_callback_is_not_lost(capfd: pytest.CaptureFixtur
     finally:
         signal.signal(signal.SIGINT, previous)
     assert "Traceback" not in capfd.readouterr().err
+
+
+def test_f12_says_where_the_screenshot_went(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """F12 in the view saves a PNG in the current folder and prints its full path, once."""
+    pygame = pytest.importorskip("pygame")
+    from playground.view.app import App
+    from playground.view.launcher import init_headless, show_level
+
+    monkeypatch.chdir(tmp_path)
+    init_headless()
+    app = App(show_level, "rest", size=(320, 240))
+    app.run_frames(2)
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_F12))
+    (shot,) = tmp_path.glob("*.png")
+    assert str(shot.resolve()) in _one_line(capsys.readouterr().err)
