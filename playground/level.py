@@ -202,6 +202,10 @@ class View(_Model):
 class UniformGravity(_Model):
     """The same acceleration everywhere (m/s²)."""
 
+    # A gravity table names its kind (the field is a tagged union); the default only serves the
+    # level's own default field. The schema says so too.
+    model_config = ConfigDict(json_schema_extra={"required": ["kind"]})
+
     kind: Literal["uniform"] = "uniform"
     g: Annotated[tuple[Gravity_, Gravity_], Strict(False)] = (0.0, -9.81)
 

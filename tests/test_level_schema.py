@@ -33,6 +33,7 @@ CRATE = (
         ("[settings]\nsubsteps = 2.5\n", "settings.substeps"),
         ("[settings]\ncontact_split = 1\n", "settings.contact_split"),
         ('[view]\ncamera = ["0", 0]\n', "view.camera.0"),
+        ("[gravity]\ng = [0, -5]\n", "gravity"),
     ],
 )
 def test_check_refuses_what_the_schema_refuses(text: str, path: str) -> None:
