@@ -56,6 +56,7 @@ def test_screenshot_has_the_asked_size(tmp_path: Path) -> None:
         (["--screenshot", "{tmp}/shot.webp"], "--screenshot: '"),
         (["--screenshot", "{tmp}/shot"], "unknown picture type"),
         (["--screenshot", "{tmp}/missing/shot.png"], "--screenshot: folder"),
+        (["--frames", "0", "--gif", "{tmp}/run.gif"], "--gif: needs at least one frame"),
     ],
 )
 def test_bad_output_options_are_one_line_exit_2_and_write_nothing(

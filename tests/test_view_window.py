@@ -1,7 +1,7 @@
 """The demo in a real window: `playground play` opens an X11 window under Xvfb (a virtual screen),
 runs its frames and saves what it drew; real X key, mouse and wheel events (xdotool) toggle every
-overlay, drag a crate, move a tuning slider and zoom; without any display it refuses with a hint,
-exit code 2.
+overlay, drag a crate, move a tuning slider, zoom and resize the window; without any display it
+refuses with a hint, exit code 2.
 
 The window tests need Debian's ``xvfb`` and ``xdotool`` (``.ci/run`` installs them where it can);
 elsewhere they are skipped and say why.
@@ -99,7 +99,7 @@ def test_real_x_events_toggle_overlays_drag_a_crate_move_a_slider_and_zoom(
     """Law: X key presses flip each overlay; an X mouse press on the crate and moves 2.5 m up
     lift it there, held by a pull equal to its weight and drawn in the mouse's colour; a click on
     the 1€ min_cutoff slider's track changes the world's filter, and the knob is drawn there; a
-    wheel notch zooms by one step."""
+    wheel notch zooms by one step; resizing the window resizes what the app draws."""
     env = {k: v for k, v in os.environ.items() if k not in ("SDL_VIDEODRIVER", "DISPLAY")}
     driver = Path(__file__).with_name("window_driver.py")
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x800x24", sys.executable, str(driver)]
@@ -141,3 +141,5 @@ def test_real_x_events_toggle_overlays_drag_a_crate_move_a_slider_and_zoom(
 
     before, after = report["zoom"]
     assert after == pytest.approx(before * ZOOM_STEP)
+
+    assert report["resized"] == [[800, 500]] * 3

@@ -4,9 +4,10 @@ XTEST extension), for tests/test_view_window.py. Run under Xvfb::
     xvfb-run -a python tests/window_driver.py OUT_DIR
 
 It opens ``sandbox`` in a window, then — each step checked before the next — toggles every
-overlay key, drags the crate up with the mouse, opens the tuning panel and moves a slider, and
-zooms with the wheel. It writes what it saw to ``OUT_DIR/window.json`` and the window's pixels
-after the drag and after the slider to ``OUT_DIR/drag.png`` and ``OUT_DIR/slider.png``.
+overlay key, drags the crate up with the mouse, opens the tuning panel and moves a slider,
+zooms with the wheel and resizes the window. It writes what it saw to ``OUT_DIR/window.json``
+and the window's pixels after the drag and after the slider to ``OUT_DIR/drag.png`` and
+``OUT_DIR/slider.png``.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from typing import Any
 WAIT_S = 20.0  # s of wall time to wait for an X event to reach the app (slow, shared CI machines)
 LEVEL = "sandbox"
 SIZE = (960, 600)
+RESIZED = (800, 500)
 
 
 def main(out: Path) -> int:
@@ -120,6 +122,12 @@ def main(out: Path) -> int:
     xdo("mousemove", "--window", wid, str(SIZE[0] // 2), str(SIZE[1] // 2), "click", "4")
     until("the wheel", lambda: app.camera.zoom != zoom)
     report["zoom"] = [zoom, app.camera.zoom]
+
+    # The window is resizable: the app draws at the new size.
+    xdo("windowsize", "--sync", wid, str(RESIZED[0]), str(RESIZED[1]))
+    until("the resize", lambda: app.size == RESIZED)
+    pump(2)
+    report["resized"] = [list(app.size), list(app.surface.get_size()), list(app.camera.size)]
 
     (out / "window.json").write_text(json.dumps(report, indent=1), encoding="utf-8")
     pygame.display.quit()

@@ -133,6 +133,9 @@ def play(
     if movie is not None and frames is None and not headless:
         print("playground play: --gif: needs --frames N in a window", file=sys.stderr)
         return 2
+    if movie is not None and frames == 0:
+        print("playground play: --gif: needs at least one frame, got --frames 0", file=sys.stderr)
+        return 2
     if not headless and not display_available():
         print(
             "playground play: no display found (DISPLAY/WAYLAND_DISPLAY unset). "
