@@ -247,16 +247,18 @@ class Controller:
     - **probe**: a circle swept from the centre along −up (``probe_length``) finds the ground.
     - **hover**: a damped spring on the height over the hit point and on the velocity relative to
       the ground point, ``F = m·g_n + k·(ride − h) − c·v_rel`` with ``k = m(2πf)²``,
-      ``c = 2ζm·2πf``, and the gravity into the ground as feed-forward so it rests exactly at ride
-      height. The spring reads the height the integrator will use and the damper the velocity
-      after the step (:func:`hover_spring`), so it is stable while 2πf·dt < :func:`hover_limit`.
-      It acts along the ground normal n (on flat ground under an upright player, n = up):
-      a spring along a tilted up would read a slant distance and sag whenever the player leans
-      (perceived up tilts while accelerating), while along n the hover and the drive are exactly a
-      contact's normal and friction parts. It only pushes (a floor cannot pull), so jumping off or
-      a gravity flip is never held back.
+      ``c = 2ζm·2πf`` (m the body's mass now), and the weight felt in the ground's frame (gravity
+      minus the ground's acceleration, :attr:`GroundHit.frame_acceleration`) as feed-forward, so
+      it rests exactly at ride height, in a rising lift too. The spring reads the height the
+      integrator will use and the damper the velocity after the step (:func:`hover_spring`), so
+      it is stable while 2πf·dt < :func:`hover_limit`. It acts along the ground normal n (on
+      flat ground under an upright player, n = up): a spring along a tilted up would read a
+      slant distance and sag whenever the player leans (perceived up tilts while accelerating),
+      while along n the hover and the drive are exactly a contact's normal and friction parts.
+      It only pushes (a floor cannot pull), so jumping off or a gravity flip is never held back.
     - **drive**: toward ``ground velocity + move·max_speed`` along the ground tangent with time
-      constant ``drive_time``, plus the tangential gravity (so slopes hold), bounded by
+      constant ``drive_time``, plus the tangential part of the gravity felt in the ground's frame
+      (so slopes hold and an accelerating platform carries it without lag), bounded by
       ``ground_force`` and by ``traction × hover force``.
     - **balance**: a PD torque toward up, bounded by ``balance_torque``. Needing more than the
       budget for ``balance_loss_time`` while supported loses balance (hover, drive and balance let
@@ -722,7 +724,8 @@ class Controller:
         # the hit point, ride height further from the axis, moves faster than standing still.
         gvx, gvy = hit.frame_velocity
         v_t = (vx - gvx) * tx + (vy - gvy) * ty
-        # Feed-forward: the tangential part of the gravity felt in the ground's frame, so slopes
+        # Feed-forward: the tangential part of the gravity felt in the ground's frame (gravity
+        # minus the ground's acceleration, its own included on a kinematic ground), so slopes
         # hold and a turning floor's chords (slopes to the centrifugal force) do not creep.
         ax, ay = hit.frame_acceleration
         accel = (move * cfg.max_speed - v_t) / max(cfg.drive_time, dt) - (

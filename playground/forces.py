@@ -66,7 +66,8 @@ class ForceLedger:
 
     Forces are world vectors (N) at world points (m); the torque about the centre of gravity
     follows. :meth:`flush` writes the totals to the bodies; it runs before every substep because
-    pymunk clears forces after integrating.
+    pymunk clears forces after integrating. In a world, add through ``World.apply_force`` and
+    ``World.apply_torque``: they also tell the world that its next step has forces to flush.
 
     >>> body = pymunk.Body(2.0, 1.0)
     >>> ledger = ForceLedger()
