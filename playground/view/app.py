@@ -232,8 +232,8 @@ class Session:
         """What the mouse holds now (None: nothing); pulled toward in every step's CONTROL stage."""
         self.spring = MouseSpring()
         self.altered: set[str] = set()
-        """What changed the run besides the recorded intents ("mouse drag", "live tuning"): a
-        replay of this session then does not reproduce it."""
+        """What changed the run besides the recorded intents and drags ("live tuning"): a replay
+        of this session then does not reproduce it."""
         self.pull: tuple[Vec, Vec] | None = None
         """The last step's mouse force (N) and the world point it acted at (m), or None."""
         show.world.on(Stage.CONTROL, self.pull_hook)
@@ -291,7 +291,9 @@ class Session:
     def pull_hook(self, world: World) -> None:
         """CONTROL stage: the mouse spring's force on the grabbed body, into the ledger as an
         APPLIED force at the grabbed point (see :mod:`playground.view.mouse`)."""
-        grab = self.grab
+        grab = self.playback.grab_at(world.steps) if self.playback is not None else self.grab
+        if self.recorder is not None:
+            self.recorder.record_grab(world.steps, grab)
         if grab is None or grab.body not in world.names:
             self.pull = None
             return
@@ -304,7 +306,6 @@ class Session:
         if pull.torque != 0.0:
             world.apply_torque(body, pull.torque, category=Category.APPLIED)
         self.pull = (pull.force, pull.point)
-        self.altered.add("mouse drag")
 
     def intent(self, t: float) -> Intent:
         """The player's intent source (replaces a level's script): this step's intent."""

@@ -188,8 +188,8 @@ def play(
             replays[-1].save(replay_out)
             if app.session.altered:
                 print(
-                    f"playground play: note: {replay_out} holds the keyboard's intents only; "
-                    f"this session's {' and '.join(sorted(app.session.altered))} are not in it",
+                    f"playground play: note: {replay_out} holds the intents and mouse drags; "
+                    f"this session's {' and '.join(sorted(app.session.altered))} is not in it",
                     file=sys.stderr,
                 )
     if window is not None:

@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from playground.intents import Intent
+from playground.view.mouse import Grab
 
 __all__ = ["FORMAT", "Recorder", "Replay", "ReplayError", "intent_from_dict", "intent_to_dict"]
 
@@ -80,12 +81,21 @@ class Replay:
     steps: int
     changes: tuple[tuple[int, Intent], ...]
     actor: str = "player"
+    grabs: tuple[tuple[int, Grab | None], ...] = ()
+    """What the mouse held from each step on (None: nothing), when it changed."""
     _steps: tuple[int, ...] = field(init=False, repr=False, compare=False)
+    _grab_steps: tuple[int, ...] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # The change steps once, not rebuilt on every lookup (a 36 000-step replay with 18 000
         # changes spent most of its time rebuilding this list).
         object.__setattr__(self, "_steps", tuple(s for s, _ in self.changes))
+        object.__setattr__(self, "_grab_steps", tuple(s for s, _ in self.grabs))
+
+    def grab_at(self, step: int) -> Grab | None:
+        """What the mouse held at ``step`` (None before the first drag)."""
+        i = bisect.bisect_right(self._grab_steps, step) - 1
+        return self.grabs[i][1] if i >= 0 else None
 
     def intent_at(self, step: int) -> Intent:
         """The intent in force at ``step`` (the default intent before the first change), found by
@@ -105,7 +115,11 @@ class Replay:
         # One line per change keeps long sessions diffable and readable.
         lines = [f" {json.dumps(k)}: {json.dumps(v)}," for k, v in head.items()]
         rows = ",\n".join(f"  {json.dumps([s, intent_to_dict(i)])}" for s, i in self.changes)
-        return "{\n" + "\n".join(lines) + '\n "changes": [\n' + rows + "\n ]\n}"
+        grabs = ""
+        if self.grabs:
+            held = ",\n".join(f"  {json.dumps([s, _grab_to_dict(g)])}" for s, g in self.grabs)
+            grabs = ',\n "grabs": [\n' + held + "\n ]"
+        return "{\n" + "\n".join(lines) + '\n "changes": [\n' + rows + "\n ]" + grabs + "\n}"
 
     @classmethod
     def from_json(cls, text: str, where: str = "replay") -> Replay:
@@ -142,7 +156,15 @@ class Replay:
         actor = doc.get("actor", "player")
         if not isinstance(actor, str):
             raise ReplayError(f"{where}: actor: expected a body name, got {actor!r}")
-        return cls(level=level, dt=dt, steps=steps, changes=tuple(changes), actor=actor)
+        grabs = _grabs_from(doc.get("grabs", []), where)
+        return cls(
+            level=level,
+            dt=dt,
+            steps=steps,
+            changes=tuple(changes),
+            actor=actor,
+            grabs=grabs,
+        )
 
     def to_inputs(self) -> str:
         """The replay as a level's scripted input timeline (TOML ``[[inputs]]`` tables).
@@ -196,14 +218,56 @@ def _toml(value: Any) -> str:
     return json.dumps(str(value))
 
 
+def _grab_to_dict(grab: Grab | None) -> dict[str, Any] | None:
+    if grab is None:
+        return None
+    return {"body": grab.body, "anchor": list(grab.anchor), "target": list(grab.target)}
+
+
+def _point(value: Any) -> tuple[float, float] | None:
+    ok = isinstance(value, list) and len(value) == 2
+    if not ok or not all(isinstance(v, float | int) and math.isfinite(v) for v in value):
+        return None
+    return (float(value[0]), float(value[1]))
+
+
+def _grabs_from(raw: Any, where: str) -> tuple[tuple[int, Grab | None], ...]:
+    """The ``grabs`` list of a replay document: ``[step, {body, anchor, target} | null]``."""
+    if not isinstance(raw, list):
+        raise ReplayError(f"{where}: grabs: expected a list of [step, grab or null]")
+    out: list[tuple[int, Grab | None]] = []
+    last = -1
+    for k, entry in enumerate(raw):
+        here = f"{where}: grabs[{k}]"
+        expected = 'expected [step, {"body", "anchor": [x, y], "target": [x, y]} or null]'
+        if not (isinstance(entry, list) and len(entry) == 2 and isinstance(entry[0], int)):
+            raise ReplayError(f"{here}: {expected}, got {entry!r}")
+        if entry[0] <= last:
+            raise ReplayError(f"{here}: steps must increase, got {entry[0]} after {last}")
+        last = entry[0]
+        g = entry[1]
+        if g is None:
+            out.append((entry[0], None))
+            continue
+        ok = isinstance(g, dict) and set(g) == {"body", "anchor", "target"}
+        anchor = _point(g.get("anchor")) if ok else None
+        target = _point(g.get("target")) if ok else None
+        if not ok or not isinstance(g["body"], str) or anchor is None or target is None:
+            raise ReplayError(f"{here}: {expected}, got {g!r}")
+        out.append((entry[0], Grab(g["body"], anchor, target)))
+    return tuple(out)
+
+
 class Recorder:
-    """Collects the intent applied at each physics step into a :class:`Replay`."""
+    """Collects the intent applied at each physics step, and what the mouse held, into a
+    :class:`Replay`."""
 
     def __init__(self, *, level: str, dt: float, actor: str = "player") -> None:
         self.level = level
         self.dt = dt
         self.actor = actor
         self._changes: list[tuple[int, Intent]] = []
+        self._grabs: list[tuple[int, Grab | None]] = []
         self._steps = 0
 
     def record(self, step: int, intent: Intent) -> None:
@@ -215,6 +279,12 @@ class Recorder:
             self._changes.append((step, intent))
         self._steps = step + 1
 
+    def record_grab(self, step: int, grab: Grab | None) -> None:
+        """Record what the mouse holds during ``step`` (stored only when it changes)."""
+        last = self._grabs[-1][1] if self._grabs else None
+        if grab != last:
+            self._grabs.append((step, grab))
+
     def replay(self) -> Replay:
         return Replay(
             level=self.level,
@@ -222,4 +292,5 @@ class Recorder:
             steps=self._steps,
             changes=tuple(self._changes),
             actor=self.actor,
+            grabs=tuple(self._grabs),
         )
