@@ -283,7 +283,7 @@ def cmd_faults(args: argparse.Namespace) -> int:
         print(f"playground faults: {exc}", file=sys.stderr)
         return 2
     total = sum(1 + len(args.breaks or level.catches) for _, level in levels)
-    bar = _progress(total, "faults") if sys.stderr.isatty() else None
+    bar = _progress(total, "faults") if sys.stderr.isatty() and not args.no_progress else None
     start = time.perf_counter()
     rows = faults.matrix(
         levels, args.breaks, progress=None if bar is None else lambda label: bar.update(1)
@@ -480,6 +480,7 @@ def parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--list", action="store_true", help="list the breaks and what each breaks")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     p.set_defaults(func=cmd_faults)
 
     p = sub.add_parser("play", help="open a level in the desktop view (pygame-ce)")

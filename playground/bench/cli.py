@@ -73,6 +73,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     docs.add_argument("dir", type=Path, nargs="?", default=Path("docs"), help="default: docs")
     docs.add_argument("--quick", action="store_true", help="small sizes (to try the command)")
     docs.add_argument("--workers", type=int, default=None, help="processes for the sweep")
+    docs.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
 def _accuracy(args: argparse.Namespace) -> list[Result]:
