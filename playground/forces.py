@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
 
@@ -66,8 +67,9 @@ class ForceLedger:
 
     Forces are world vectors (N) at world points (m); the torque about the centre of gravity
     follows. :meth:`flush` writes the totals to the bodies; it runs before every substep because
-    pymunk clears forces after integrating. In a world, add through ``World.apply_force`` and
-    ``World.apply_torque``: they also tell the world that its next step has forces to flush.
+    pymunk clears forces after integrating. ``on_first`` is called when an empty ledger gets its
+    first entry: a world uses it to know that its next step has forces to flush (a step with
+    nothing to do takes a bare path that never looks at the ledger).
 
     >>> body = pymunk.Body(2.0, 1.0)
     >>> ledger = ForceLedger()
@@ -77,10 +79,19 @@ class ForceLedger:
     (Vec2d(3.0, 0.0), -3.0)
     """
 
-    __slots__ = ("_entries",)
+    __slots__ = ("_entries", "_on_first")
 
-    def __init__(self) -> None:
+    def __init__(self, on_first: Callable[[], None] | None = None) -> None:
         self._entries: dict[int, _Entry] = {}
+        self._on_first = on_first
+
+    def _entry(self, body: pymunk.Body) -> _Entry:
+        entry = self._entries.get(body.id)
+        if entry is None:
+            if not self._entries and self._on_first is not None:
+                self._on_first()
+            entry = self._entries[body.id] = _Entry(body)
+        return entry
 
     def add(
         self,
@@ -95,9 +106,7 @@ class ForceLedger:
         fx, fy = float(force[0]), float(force[1])
         if not (math.isfinite(fx) and math.isfinite(fy)):
             raise ValueError(f"force: expected a finite 2-vector in newtons, got {force!r}")
-        entry = self._entries.get(body.id)
-        if entry is None:
-            entry = self._entries[body.id] = _Entry(body)
+        entry = self._entry(body)
         entry.fx += fx
         entry.fy += fy
         if point is not None:
@@ -111,10 +120,7 @@ class ForceLedger:
         """Record a pure torque (N·m)."""
         if not math.isfinite(torque):
             raise ValueError(f"torque: expected a finite number in N·m, got {torque!r}")
-        entry = self._entries.get(body.id)
-        if entry is None:
-            entry = self._entries[body.id] = _Entry(body)
-        entry.torque += float(torque)
+        self._entry(body).torque += float(torque)
 
     def flush(self) -> None:
         """Write each body's total force and torque (replacing what it had)."""

@@ -165,12 +165,12 @@ class World:
     Bodies are added by name (:meth:`add`); the world registers masses for per-body gravity and
     tracks forces only for bodies passed to :meth:`track`. Scripts and controllers hook into the
     INPUTS, EVENTS, CONTROL and OBSERVE stages with :meth:`on`; forces and torques go through
-    :meth:`apply_force` and :meth:`apply_torque`, so the solver's ledger knows their categories
-    and the step is planned around them (an entry added to :attr:`ledger` directly is flushed only
-    by a step that is not bare). A force set straight on a pymunk body acts too, for the whole
-    step like any other (see ``WorldConfig.substeps``); the solver counts it as APPLIED. The
-    space drops an arbiter as soon as its contact ends (``collision_persistence`` 1), so arbiter
-    impulses are the impulses applied (see :class:`~playground.forces.ForceSolver`).
+    :meth:`apply_force` and :meth:`apply_torque` (they check their input and land in
+    :attr:`ledger`, which records their categories for the solver). A force set straight on a
+    pymunk body acts too, for the whole step like any other (see ``WorldConfig.substeps``); the
+    solver counts it as APPLIED. The space drops an arbiter as soon as its contact ends
+    (``collision_persistence`` 1), so arbiter impulses are the impulses applied (see
+    :class:`~playground.forces.ForceSolver`).
     """
 
     def __init__(
@@ -195,7 +195,7 @@ class World:
         self.time = 0.0
         self._epoch = (0, 0.0)  # (steps, time) when dt last changed
         self.steps = 0
-        self.ledger = ForceLedger()
+        self.ledger = ForceLedger(on_first=self._replan)
         self.solver = ForceSolver(
             contact_split=self.config.contact_split,
             check_sleep=math.isfinite(self.config.sleep_time),
@@ -273,6 +273,10 @@ class World:
             raise ValueError(f"perception: expected a Perception, got {perception!r}")
         self.perceived.tune(perception)
         self._config = dataclasses.replace(self._config, perception=perception)
+
+    def _replan(self) -> None:
+        """Plan the next step again (something it must do has appeared)."""
+        self._plan_dirty = True
 
     def _plan(self) -> None:
         """Decide whether the next steps are bare: nothing but ``space.step``."""

@@ -72,6 +72,20 @@ def test_apply_torque_acts_on_a_world_that_stepped_bare(substeps: int) -> None:
     assert abs(box.angular_velocity - want) <= TOL_REL * want  # one step only
 
 
+def test_a_ledger_entry_acts_on_a_world_that_stepped_bare() -> None:
+    """Law: a torque or force put straight into ``world.ledger`` after bare steps is flushed on
+    the coming step (the ledger tells the world), and the ledger is empty after it."""
+    world, box = box_world(1, tracked=False)
+    world.run(0.1)
+    world.ledger.add_torque(box, TORQUE, Category.APPLIED)
+    world.ledger.add(box, FORCE)
+    world.step()
+    dt = world.config.dt
+    assert abs(box.angular_velocity - TORQUE / box.moment * dt) <= TOL_REL * TORQUE
+    assert abs(box.velocity.x - FORCE[0] / box.mass * dt) <= TOL_REL * FORCE[0]
+    assert len(world.ledger) == 0
+
+
 def test_the_controller_applies_its_torques_through_the_world(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
