@@ -155,6 +155,15 @@ def test_crusher_shows_the_crate_pressing_on_the_player() -> None:
     feet = app.camera.to_screen((p.x, p.y - ctrl.config.half_length - ctrl.config.radius))
     x0, x1 = int(head[0] - BAND_PX), int(head[0] + BAND_PX)
     assert not normal[x0:x1, int(head[1]) + 6 : int(feet[1]) - 6].any()
+    # Heaving, the crate pushes back on it: that push is drawn pressing down onto where it
+    # pushes (at its head), not from its centre down through the floor.
+    heave = at_moment("crusher", 2.3)
+    q = heave.world.body("player").position
+    top = heave.camera.to_screen((q.x, q.y + ctrl.config.half_length + ctrl.config.radius))
+    bottom = heave.camera.to_screen((q.x, q.y - ctrl.config.half_length - ctrl.config.radius))
+    push = mask(heave, "push")
+    assert reach(push, top, (0.0, -1.0)) >= weight_px(heave, "player")
+    assert reach(push, bottom, (0.0, 1.0)) == 0.0
     end = at_moment("crusher", 5.0)
     assert end.session.show.controllers["player"].state.value == "grounded"
     player, crate = screen(end, "player"), screen(end, "crate")

@@ -36,7 +36,8 @@ def headless() -> Iterator[None]:
 def _capsule_pixels(angle_deg: float) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
     """A 1.2 m capsule of radius 0.3 m at 100 px/m turned by ``angle_deg``: (drawn, fill) masks."""
     w = World()
-    body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    # Static: a kinematic body would also get its spoke drawn over the fill.
+    body = pymunk.Body(body_type=pymunk.Body.STATIC)
     body.angle = math.radians(angle_deg)
     w.add("capsule", body, pymunk.Segment(body, (-0.6, 0.0), (0.6, 0.0), 0.3))
     surf = pygame.Surface((300, 300))
@@ -45,7 +46,7 @@ def _capsule_pixels(angle_deg: float) -> tuple[NDArray[np.bool_], NDArray[np.boo
     draw_world(surf, Camera(size=(300, 300), pixels_per_metre=100.0), w)
     arr = pygame.surfarray.array3d(surf).astype(int)
     drawn = np.abs(arr - np.array(bg)).max(axis=2) > 0
-    fill_colour = np.array([int(c * 0.45) for c in COLOURS["kinematic"]])
+    fill_colour = np.array([int(c * 0.45) for c in COLOURS["static"]])
     fill = np.abs(arr - fill_colour).max(axis=2) == 0
     return drawn, fill
 
@@ -204,3 +205,30 @@ def test_help_reads_over_a_busy_scene() -> None:
     assert np.abs(busy[region] - calm[region]).max() <= HELP_SHOW_THROUGH
     text = np.abs(busy[region] - np.array(COLOURS["text"])).max(axis=2) <= 8
     assert text.sum() >= 200
+
+
+def test_a_kinematic_ring_shows_its_turn() -> None:
+    """A kinematic body (a square room of four walls) turned by 60° shows a spoke from its centre
+    along its own x axis: kinematic-coloured pixels halfway out along 60°, none along 150°."""
+    w = World()
+    body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    body.angle = math.radians(60.0)
+    corners = [(-2.0, -2.0), (2.0, -2.0), (2.0, 2.0), (-2.0, 2.0)]
+    walls = [
+        pymunk.Segment(body, a, b, 0.05)
+        for a, b in zip(corners, corners[1:] + corners[:1], strict=True)
+    ]
+    w.add("room", body, *walls)
+    surf = pygame.Surface((300, 300))
+    surf.fill(COLOURS["background"])
+    cam = Camera(size=(300, 300), pixels_per_metre=50.0)
+    draw_world(surf, cam, w)
+    arr = pygame.surfarray.array3d(surf).astype(int)
+    hit = np.abs(arr - np.array(COLOURS["kinematic"])).max(axis=2) == 0
+
+    def seen(angle_deg: float) -> bool:
+        a = math.radians(angle_deg)
+        x, y = cam.to_screen((1.0 * math.cos(a), 1.0 * math.sin(a)))
+        return bool(hit[int(x) - 3 : int(x) + 4, int(y) - 3 : int(y) + 4].any())
+
+    assert seen(60.0) and not seen(150.0)

@@ -169,6 +169,33 @@ def _draw_shape(
         outlined_polygon(surf, fill, edge, pts)
 
 
+def _draw_spoke(surf: pygame.Surface, cam: Camera, body: pymunk.Body) -> None:
+    """A kinematic body's turn made visible: a dashed spoke from its centre of gravity along its
+    own x axis to its farthest reach (a spinning ring's spin is otherwise hard to see)."""
+    c = body.local_to_world(body.center_of_gravity)
+    reach = 0.0
+    for s in body.shapes:
+        for r in _reach_points(s):
+            reach = max(reach, (r - body.center_of_gravity).length)
+    if reach <= 0.0:
+        return
+    tip = body.local_to_world(body.center_of_gravity + pymunk.Vec2d(reach, 0.0))
+    a, b = _clamp(cam.to_screen((c.x, c.y))), _clamp(cam.to_screen((tip.x, tip.y)))
+    _dashed(surf, COLOURS["kinematic"], a, b, dash=8.0)
+    pygame.draw.circle(surf, COLOURS["kinematic"], a, JOINT_DOT_PX)
+
+
+def _reach_points(s: pymunk.Shape) -> list[pymunk.Vec2d]:
+    """Points of a shape (body coordinates) whose distances bound how far it reaches."""
+    if isinstance(s, pymunk.Circle):
+        return [s.offset + pymunk.Vec2d(s.radius, 0.0), s.offset - pymunk.Vec2d(s.radius, 0.0)]
+    if isinstance(s, pymunk.Segment):
+        return [s.a, s.b]
+    if isinstance(s, pymunk.Poly):
+        return list(s.get_vertices())
+    return []
+
+
 def _body_colour(body: pymunk.Body, roles: Mapping[int, str]) -> Colour:
     role = roles.get(body.id)
     if role is not None:
@@ -267,12 +294,17 @@ def draw_world(
     """Draw every shape of the world (actors by ``roles``: body name → role) and every joint
     except the controllers' ``grips`` (see :func:`draw_grip`)."""
     by_id = {world.body(n).id: r for n, r in (roles or {}).items() if n in world.names}
+    movers: dict[int, pymunk.Body] = {}
     for shape in world.space.shapes:
         body = shape.body
         if body is None:
             continue
         sleeping = body.body_type == pymunk.Body.DYNAMIC and body.is_sleeping
         _draw_shape(surf, cam, shape, _body_colour(body, by_id), sleeping)
+        if body.body_type == pymunk.Body.KINEMATIC:
+            movers[body.id] = body
+    for body in movers.values():
+        _draw_spoke(surf, cam, body)
     grip_joints = {id(g.joint) for g in grips}
     for c in world.space.constraints:
         if id(c) not in grip_joints:

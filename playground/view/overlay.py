@@ -226,8 +226,14 @@ class Painter:
         out += self._arrow(cam, at, (-m * pg[0], -m * pg[1]), m, w_px, "support_filtered", 5)
         out += self._arrow(cam, at, raw, m, w_px, "support")
         forces, origins = _controller_forces(ctrl)
+        pushed = getattr(ctrl, "pushed", None)
         for kind, f in forces.items():
-            out += self._arrow(cam, origins.get(kind, at), f, m, w_px, kind)
+            arrows = self._arrow(cam, origins.get(kind, at), f, m, w_px, kind)
+            if kind == "push" and pushed is not None:
+                # What it pushes pushes back: drawn pressing onto the point it pushes at (its
+                # head under a crate), not from its centre down through the floor.
+                arrows = [_ending_at(a) for a in self._arrow(cam, pushed[0], f, m, w_px, kind)]
+            out += arrows
         return out
 
     def _perceived(
