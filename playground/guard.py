@@ -30,10 +30,12 @@ __all__ = [
     "first_bad",
 ]
 
-GUARD_EVERY = 64
-"""Steps between checks of every body's state (about half a second at 1/120 s). Tracked bodies'
-force readings are checked every step; a blow-up grows by orders of magnitude per step, so a body
-that is not tracked is caught within this many steps, still long before anyone reads it."""
+GUARD_EVERY = 256
+"""Steps between checks of every body's state (about two seconds at 1/120 s): one batch read of
+every body costs ~4 µs at 10 bodies, so checked this rarely it adds < 1 % even to a 7 µs bare step.
+Tracked bodies' force readings are checked every step; a blow-up grows by orders of magnitude per
+step, so a body that is not tracked is caught within this many steps, before anyone reads it (only
+tracked bodies have readings and recordings, and the view clamps what it draws)."""
 
 STATE_COLUMNS = (
     ("position", "x", "m"),

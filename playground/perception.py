@@ -126,7 +126,8 @@ class PerceivedGravity:
             self.gravity = out
         else:
             np.copyto(self.gravity, out, where=finite[:, None])
-        with np.errstate(divide="ignore", invalid="ignore"):
+        # Weak rows are dropped below; a subnormal norm may overflow there, harmlessly.
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             direction = z / -norm
         held = self.up.view(np.complex128).ravel()
         self.up = np.where(strong, direction, held).view(np.float64).reshape(-1, 2)

@@ -300,6 +300,7 @@ def _run(examples: int) -> dict[str, int]:
     return tally
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # an overflow on the way is a failure too
 def test_fuzz_ci() -> None:
     """Law: every one of :data:`CI_EXAMPLES` documents is refused with LevelError or runs a second
     with finite readings (and enough of them run for the law to say something)."""

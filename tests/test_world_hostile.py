@@ -183,6 +183,18 @@ def test_sleeping_is_safe_in_every_state(case: str) -> None:
 
 # -- the property over the whole API ------------------------------------------------------------
 
+
+class _Source:
+    """An intent source whose intent the property sets."""
+
+    current = Intent()
+
+    def intent(self, t: float) -> Intent:
+        return self.current
+
+
+SOURCE = _Source()
+
 HOSTILE = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True),
     st.sampled_from([0.0, -1.0, 5e-324, 1e-300, 1e16, -1e16, 1e308, -1e308, NAN, INF, -INF]),
@@ -212,12 +224,16 @@ def _op(world: World, kind: str, a: float, v: tuple[float, float], w: tuple[floa
         world.apply_impulse("free", v, point=w)
     elif kind == "set_mass":
         world.set_mass("crate", a, moment=v[0])
+    elif kind == "intent":
+        # What a keyboard or script may send: Intent refuses it, or the player acts on it.
+        SOURCE.current = Intent(move=a, climb=v[0], gravity=w, jump=True)
     elif kind == "gravity":
         world.gravity = v
     else:
         world.add_static_segment(v, w, radius=a)
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # an overflow on the way is a failure too
 @settings(
     max_examples=300,
     derandomize=True,
@@ -237,6 +253,7 @@ def _op(world: World, kind: str, a: float, v: tuple[float, float], w: tuple[floa
                     "set_mass",
                     "gravity",
                     "segment",
+                    "intent",
                 ]
             ),
             HOSTILE,
@@ -254,6 +271,8 @@ def test_hostile_calls_are_refused_or_leave_a_finite_world(
     steps on with every body finite — or the runtime guard stops it with RunawayError before
     anything non-finite is read. Never an abort, never NaN."""
     world = _world()
+    SOURCE.current = Intent()
+    player = Controller(world, "player", (-8.0, 1.2), source=SOURCE)
     for kind, a, v, w in ops:
         try:
             _op(world, kind, a, v, w)
@@ -270,6 +289,7 @@ def test_hostile_calls_are_refused_or_leave_a_finite_world(
             assert all(math.isfinite(x) for x in state), (name, state)
             assert abs(body.position.x) < 1e12 and abs(body.position.y) < 1e12
         assert all(math.isfinite(x) for x in world.forces("crate").engine)
+        assert all(math.isfinite(x) for x in (*player.up, *player.last_forces.drive))
         g = world.gravity_at("crate")
         assert math.hypot(*g) <= MAX_GRAVITY * math.sqrt(2)
 

@@ -98,6 +98,11 @@ def _controller(world: World, n: int) -> None:
     Controller(world, "player", position=(-1.0, 1.0))
 
 
+def _no_guard(world: World, n: int) -> None:
+    # The runtime guard off: "none" minus this row is what the guard costs a scene with no effect.
+    world.config = replace(world.config, guard=False)
+
+
 EFFECTS: dict[str, Callable[[World, int], None] | None] = {
     "none": None,
     "rotating room": _rotating_room,
@@ -109,6 +114,7 @@ EFFECTS: dict[str, Callable[[World, int], None] | None] = {
     "contact split (1 body)": _track_one,
     "perceived-gravity filter (1 body)": _perceive_one,
     "controller (1)": _controller,
+    "runtime guard off": _no_guard,
 }
 """Each effect and how it is switched on (``None``: uniform gravity only)."""
 
