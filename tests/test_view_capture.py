@@ -4,6 +4,7 @@ half-written file."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -108,3 +109,21 @@ def test_gifs_command_writes_one_gif_per_sequence_at_the_gallery_size(tmp_path: 
         assert gif.size == SIZE
         assert gif.n_frames == round(seconds * FPS) + 1
         assert gif.info["duration"] == round(1000 / FPS)
+
+
+def test_docs_embed_every_sequence_gif_and_only_gifs_the_gallery_makes() -> None:
+    """Law: the README and the teaching chapters show each seed sequence's GIF, every GIF they
+    embed is one `playground gifs` makes, and it is committed."""
+    from playground.view.gallery import SEQUENCES
+
+    root = Path(__file__).resolve().parent.parent
+    gif = re.compile(r"!\[[^\]]*\]\((?:\.\./)?(?:docs/)?img/gifs/([^)]+)\.gif\)")
+    readme = set(gif.findall((root / "README.md").read_text(encoding="utf-8")))
+    chapters: set[str] = set()
+    for path in sorted((root / "docs" / "chapters").glob("*.md")):
+        chapters |= set(gif.findall(path.read_text(encoding="utf-8")))
+    assert readme == set(SEQUENCES)
+    assert chapters == set(SEQUENCES)
+    for name in SEQUENCES:
+        with Image.open(root / "docs" / "img" / "gifs" / f"{name}.gif") as shown:
+            assert shown.format == "GIF" and shown.n_frames > 1
