@@ -59,6 +59,7 @@ from playground.limits import (
 )
 from playground.movers import Mover, Path
 from playground.perception import PerceivedGravity, Perception
+from playground.scalar import SCALAR_MAX_BODIES, ScalarPath
 
 __all__ = ["Stage", "StageTiming", "World", "WorldConfig"]
 
@@ -196,11 +197,17 @@ class World:
         self._epoch = (0, 0.0)  # (steps, time) when dt last changed
         self.steps = 0
         self.ledger = ForceLedger(on_first=self._replan)
-        self.solver = ForceSolver(
+        self._solver = ForceSolver(
             contact_split=self.config.contact_split,
             check_sleep=math.isfinite(self.config.sleep_time),
         )
-        self.perceived = PerceivedGravity(self.config.perception)
+        self._perceived = PerceivedGravity(self.config.perception)
+        # Few tracked bodies: the scalar path serves them in plain floats (see _plan).
+        self._scalar = ScalarPath()
+        self.scalar_max_bodies = SCALAR_MAX_BODIES
+        """Most tracked bodies the scalar path serves (0: never; set before stepping)."""
+        self._scalar_on = False
+        self._scalar_synced = True
         self.config = self._config
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._bodies: dict[str, pymunk.Body] = {}
@@ -261,8 +268,8 @@ class World:
         self.space.damping = config.damping
         self.space.collision_slop = config.collision_slop
         self.space.sleep_time_threshold = config.sleep_time
-        self.solver.contact_split = config.contact_split
-        self.solver.check_sleep = math.isfinite(config.sleep_time)
+        self._solver.contact_split = config.contact_split
+        self._solver.check_sleep = math.isfinite(config.sleep_time)
         self._guard_next = self.steps + GUARD_EVERY if config.guard else _NEVER
         self._plan_dirty = True
 
@@ -271,15 +278,56 @@ class World:
         step on, keeping the filter's state; the spike stage is fixed when the world is built."""
         if not isinstance(perception, Perception):
             raise ValueError(f"perception: expected a Perception, got {perception!r}")
-        self.perceived.tune(perception)
+        self._perceived.tune(perception)
         self._config = dataclasses.replace(self._config, perception=perception)
 
     def _replan(self) -> None:
         """Plan the next step again (something it must do has appeared)."""
         self._plan_dirty = True
 
+    @property
+    def solver(self) -> ForceSolver:
+        """The force solver: membership and readings of the tracked bodies (the scalar path's
+        readings are copied in when it serves them)."""
+        self._sync_scalar()
+        return self._solver
+
+    @property
+    def perceived(self) -> PerceivedGravity:
+        """Perceived gravity of the tracked bodies (filled from the scalar path when it serves)."""
+        self._sync_scalar()
+        return self._perceived
+
+    def _sync_scalar(self) -> None:
+        if self._scalar_on and not self._scalar_synced:
+            self._scalar.store(self._solver, self._perceived)
+            self._scalar_synced = True
+
+    def _leave_scalar(self) -> None:
+        """Hand the scalar path's state back before the tracked set or the masses change."""
+        if self._scalar_on:
+            self._sync_scalar()
+            self._scalar_on = False
+            self._plan_dirty = True
+
     def _plan(self) -> None:
-        """Decide whether the next steps are bare: nothing but ``space.step``."""
+        """Decide whether the next steps are bare (nothing but ``space.step``), and which path
+        serves the tracked bodies: plain floats for a few with one substep, no contact split and
+        no per-body field (:mod:`playground.scalar`), numpy and ``pymunk.batch`` otherwise."""
+        cfg = self._config
+        scalar = (
+            0 < len(self._solver.bodies) <= self.scalar_max_bodies
+            and cfg.substeps == 1
+            and not cfg.contact_split
+            and (not self._gravity_stage or self._field.uniform)
+        )
+        if scalar != self._scalar_on:
+            if scalar:
+                self._scalar.load(self._solver, self._perceived)
+                self._scalar_synced = True
+            else:
+                self._sync_scalar()
+            self._scalar_on = scalar
         self._bare = not (
             self._inputs
             or self._events
@@ -287,7 +335,7 @@ class World:
             or self._gravity_stage
             or self._movers
             or self._controls
-            or self.solver.bodies
+            or self._solver.bodies
             or self._perceivers
             or self._observers
             or len(self.ledger)
@@ -378,7 +426,7 @@ class World:
         del self._names[body.id]
         self._rules.pop(body.id, None)
         self._update_gravity_stage()
-        if self.solver.row_of(body) is not None:
+        if self._solver.row_of(body) is not None:
             self._untrack(body)
         self._movers = [m for m in self._movers if m.body is not body]
         self._plan_dirty = True
@@ -428,7 +476,9 @@ class World:
         body.mass = mass
         if moment is not None:
             body.moment = moment
-        self.solver.refresh_masses()
+        self._solver.refresh_masses()
+        if self._scalar_on:
+            self._scalar.refresh_masses()
         self._registry_dirty = True
 
     def sleep(self, name: str) -> None:
@@ -522,22 +572,24 @@ class World:
     def track(self, *names: str, perceive: bool = True) -> None:
         """Recover engine forces for these dynamic bodies every step; ``perceive`` also filters
         their perceived gravity."""
+        self._leave_scalar()
         for name in names:
             body = self.body(name)
-            old = len(self.solver.bodies)
-            self.solver.track(body)
-            if len(self.solver.bodies) > old:
-                self.perceived.resize(np.concatenate([np.arange(old), [-1]]).astype(np.intp))
+            old = len(self._solver.bodies)
+            self._solver.track(body)
+            if len(self._solver.bodies) > old:
+                self._perceived.resize(np.concatenate([np.arange(old), [-1]]).astype(np.intp))
             if perceive:
                 self._perceivers.add(body.id)
         self._plan_dirty = True
 
     def _untrack(self, body: pymunk.Body) -> None:
-        row = self.solver.row_of(body)
+        self._leave_scalar()
+        row = self._solver.row_of(body)
         assert row is not None
-        n = len(self.solver.bodies)
-        self.solver.untrack(body)
-        self.perceived.resize(np.delete(np.arange(n), row).astype(np.intp))
+        n = len(self._solver.bodies)
+        self._solver.untrack(body)
+        self._perceived.resize(np.delete(np.arange(n), row).astype(np.intp))
         self._perceivers.discard(body.id)
         self._plan_dirty = True
 
@@ -593,20 +645,26 @@ class World:
 
     def forces(self, name: str) -> BodyForces:
         """The last readings of a tracked body."""
-        return self.solver.reading(self._tracked_row(name))
+        if self._scalar_on:
+            return self._scalar.reading(self._tracked_row(name))
+        return self._solver.reading(self._tracked_row(name))
 
     def perceived_gravity(self, name: str) -> Vec:
         """The filtered perceived gravity of a tracked body, m/s²."""
-        g = self.perceived.gravity[self._tracked_row(name)]
+        if self._scalar_on:
+            return self._scalar.gravity(self._tracked_row(name))
+        g = self._perceived.gravity[self._tracked_row(name)]
         return (float(g[0]), float(g[1]))
 
     def perceived_up(self, name: str) -> Vec:
         """Unit vector opposite the perceived gravity, held through weak readings."""
-        u = self.perceived.up[self._tracked_row(name)]
+        if self._scalar_on:
+            return self._scalar.up(self._tracked_row(name))
+        u = self._perceived.up[self._tracked_row(name)]
         return (float(u[0]), float(u[1]))
 
     def _tracked_row(self, name: str) -> int:
-        row = self.solver.row_of(self.body(name))
+        row = self._solver.row_of(self.body(name))
         if row is None:
             raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
         return row
@@ -669,7 +727,7 @@ class World:
         # 6. physics: flush forces, step the space (re-applying forces every substep)
         run(Stage.PHYSICS, self._physics)
         # 7. forces: reverse integration for tracked bodies
-        if self.solver.bodies:
+        if self._solver.bodies:
             run(Stage.FORCES, self._solve_forces)
         # 8. filter: perceived gravity for the bodies that perceive
         if self._perceivers:
@@ -682,7 +740,7 @@ class World:
         # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
         self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
         # the guard: nothing non-finite or runaway reaches the observers
-        if self.solver.bodies and self._config.guard:
+        if self._solver.bodies and self._config.guard:
             self._guard_tracked()
         if self.steps >= self._guard_next:
             self._guard_all()
@@ -713,11 +771,18 @@ class World:
 
     def _guard_tracked(self) -> None:
         """Stop if a tracked body's force reading is not finite or beyond the runaway bound."""
-        bad = first_bad(self.solver.engine, FORCE_BOUNDS)
+        if self._scalar_on:
+            bad = self._scalar.first_bad(RUNAWAY_FORCE)
+            if bad is not None:
+                row, col = bad
+                value = self._scalar.engine(row)[col]
+                self._runaway(self._solver.bodies[row].id, FORCE_COLUMNS[col], value, RUNAWAY_FORCE)
+            return
+        bad = first_bad(self._solver.engine, FORCE_BOUNDS)
         if bad is not None:
             row, col = bad
-            body = self.solver.bodies[row]
-            value = float(self.solver.engine[row, col])
+            body = self._solver.bodies[row]
+            value = float(self._solver.engine[row, col])
             self._runaway(body.id, FORCE_COLUMNS[col], value, float(FORCE_BOUNDS[col]))
 
     def _guard_all(self) -> None:
@@ -828,7 +893,8 @@ class World:
         field_force = self._field_force
         # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
         # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
-        batched = field_force is not None or bool(self.solver.bodies) or n > 1
+        scalar = self._scalar_on
+        batched = field_force is not None or (bool(self._solver.bodies) and not scalar) or n > 1
         if batched:
             self._rows.read(self.space)
             if field_force is not None and np.array_equal(self._field_ids, self._rows.ids):
@@ -845,8 +911,11 @@ class World:
                 self._write_forces()
             else:
                 field_rows = None
-            if self.solver.bodies:
-                self.solver.before_step(self._rows.ids, self._rows.state, field_rows)
+            if self._solver.bodies and not scalar:
+                self._solver.before_step(self._rows.ids, self._rows.state, field_rows)
+        if scalar:
+            self._scalar.before_step()
+            self._scalar_synced = False
         for k in range(n):
             if k > 0:
                 self._write_forces()
@@ -854,9 +923,11 @@ class World:
             rescaled = self._config.contact_split and self.space.current_time_step != h
             self.space.step(h)
             self._space_steps += 1
-            if self.solver.bodies:
+            if scalar:
+                self._scalar.after_substep(check_sleep=self._solver.check_sleep)
+            elif self._solver.bodies:
                 ids, vel = self._rows.read_velocities(self.space)
-                self.solver.after_substep(
+                self._solver.after_substep(
                     self.space,
                     ids,
                     vel,
@@ -884,7 +955,14 @@ class World:
             self._rows.write_forces(self.space, self._rows.state[:, 3:6])
 
     def _solve_forces(self) -> None:
-        self.solver.finish(
+        if self._scalar_on:
+            g = self.space.gravity
+            self._scalar.finish(
+                dt=self.config.dt, damping=self.config.damping, space_gravity=(g.x, g.y),
+                ledger=self.ledger,
+            )  # fmt: skip
+            return
+        self._solver.finish(
             dt=self.config.dt,
             substeps=self.config.substeps,
             damping=self.config.damping,
@@ -893,14 +971,21 @@ class World:
         )
 
     def _filter(self) -> None:
-        self.perceived.update(self.solver.specific, self.solver.valid, self.config.dt)
-        if self.perceived.up_complete:
+        if self._scalar_on:
+            self._scalar.filter(self.config.dt, self._perceived.config.up_threshold, self._up_at)
+            return
+        self._perceived.update(self._solver.specific, self._solver.valid, self.config.dt)
+        if self._perceived.up_complete:
             return
         # Until a body has felt anything, its up is against the gravity field at it.
-        for row in np.nonzero(~np.isfinite(self.perceived.up).all(axis=1))[0]:
-            g = self.gravity_at(self._names[self.solver.bodies[row].id])
-            n = math.hypot(*g)
-            self.perceived.up[row] = (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
+        for row in np.nonzero(~np.isfinite(self._perceived.up).all(axis=1))[0]:
+            self._perceived.up[row] = self._up_at(self._solver.bodies[row])
+
+    def _up_at(self, body: pymunk.Body) -> Vec:
+        """The unit vector against the gravity field at a body: its up until it feels one."""
+        g = self.gravity_at(self._names[body.id])
+        n = math.hypot(*g)
+        return (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
 
 
 # -- argument checks -----------------------------------------------------------------------------

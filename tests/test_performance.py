@@ -48,7 +48,7 @@ def test_blocks_ratio_is_the_median_of_adjacent_pairs() -> None:
 
 def _level(name: str, players: int, us: float, control: float) -> LevelRow:
     return LevelRow(name, 1 / 120, players, us, 1.0, us, us, us, (1 / 120) / (us * 1e-6),
-                    {"control": control, "physics": 1.0})  # fmt: skip
+                    {"control": control, "physics": 1.0}, scalar=True)  # fmt: skip
 
 
 def test_goals_judge_the_worst_case_each_covers() -> None:
@@ -81,14 +81,16 @@ def test_goals_judge_the_worst_case_each_covers() -> None:
 def test_measure_times_a_level_against_its_engine() -> None:
     """Law: a level's row has the stages that ran and its step costs more than its engine's
     (it contains it); the real-time factor is dt over the step."""
-    m = performance.measure(levels=("rest",), sizes=(10,), field_bodies=10, repeats=2)
+    m = performance.measure(
+        levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), repeats=2
+    )
     (row,) = m.levels
     assert row.players == 1
     assert {"control", "physics", "forces", "filter"} <= set(row.stages)
     assert row.ratio > 1.0
     assert row.realtime == pytest.approx(row.dt / (row.level_us * 1e-6))
     kinds = {(r.kind, r.bodies) for r in m.piles}
-    assert kinds == {("solver+1€", 10), ("field", 10), ("no effect", 10)}
+    assert kinds == {("solver+1€", 10), ("field", 10), ("no effect", 10), ("scalar/vector", 1)}
 
 
 def test_overhead_json_and_performance_page(

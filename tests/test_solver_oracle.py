@@ -1,4 +1,4 @@
-"""The vectorised force solver against a slow, obviously-correct per-body oracle.
+"""The force solver's two paths against a slow, obviously-correct per-body oracle, and each other.
 
 The oracle reads each body's velocity with plain attribute access just before the step and just
 after it, knows every force it applied and the gravity each body gets, and computes, body by body,
@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import math
 import random
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import pymunk
 import pytest
 
 from playground import Category, GravityRule, Stage, World, WorldConfig
+from playground.forces import BodyForces
 
 TOL_REL = 1e-9
 """Relative to the size of the terms the formula subtracts (m·|v|/dt, m·g, |F|): the two sides
@@ -152,14 +154,23 @@ def touches_only_static(body: pymunk.Body) -> bool:
     return all(b.body_type == pymunk.Body.STATIC for b in others)
 
 
-@pytest.mark.parametrize("seed", range(5))
-def test_solver_equals_per_body_oracle(seed: int) -> None:
-    """Law: for every tracked body and step, the vectorised engine force, torque and support equal
-    the per-body oracle's; a body asleep after the step has no reading (``valid`` False, last
-    values held); added, removed and slept bodies never disturb the other rows."""
+PATHS = {"vector": 0, "scalar": 10**6, "switching": 12}
+"""Most tracked bodies the scalar path may serve: never, always, and 12, which the scenes (5–24
+tracked bodies) cross both ways as bodies come and go, so the state moves between the paths."""
+
+TOL_PATHS = 1e-12
+"""Relative difference allowed between the scalar and vectorised paths: the same operations in
+the same order, except magnitudes (``math.hypot`` against numpy's complex ``abs``), which may
+differ in the last place; the 1€ filter's feedback keeps that at round-off."""
+
+
+def scene(seed: int, scalar_max: int) -> Iterator[tuple[World, Oracle, dict[str, BodyForces]]]:
+    """A random scene stepped STEPS times: bodies spawned, removed and put to sleep. Yields the
+    world and its oracle after every step, with the readings held from before it."""
     rng = random.Random(seed)
     cfg = WorldConfig(damping=rng.choice([1.0, 0.8, 0.3]), sleep_time=0.3)
     world = World(cfg)
+    world.scalar_max_bodies = scalar_max
     world.add_static_segment((-10.0, 0.0), (10.0, 0.0), radius=0.1)
     world.add_static_segment((-10.0, 0.0), (-10.0, 10.0), radius=0.1)
     world.add_static_segment((10.0, 0.0), (10.0, 10.0), radius=0.1)
@@ -168,7 +179,6 @@ def test_solver_equals_per_body_oracle(seed: int) -> None:
     for _ in range(12):
         spawn(world, oracle, rng, count)
         count += 1
-    compared = invalid = 0
     for _ in range(STEPS):
         roll = rng.random()
         if roll < 0.06:
@@ -184,6 +194,18 @@ def test_solver_equals_per_body_oracle(seed: int) -> None:
                 body.sleep()
         held = {n: world.forces(n) for n in oracle.tracked}
         world.step()
+        yield world, oracle, held
+
+
+@pytest.mark.parametrize("path", sorted(PATHS))
+@pytest.mark.parametrize("seed", range(5))
+def test_solver_equals_per_body_oracle(seed: int, path: str) -> None:
+    """Law: for every tracked body and step, the engine force, torque and support of either path
+    (numpy and batch, or plain floats) equal the per-body oracle's; a body asleep after the step
+    has no reading (``valid`` False, last values held); added, removed and slept bodies never
+    disturb the other rows."""
+    compared = invalid = 0
+    for world, oracle, held in scene(seed, PATHS[path]):
         for name, exp in oracle.expected.items():
             f = world.forces(name)
             if exp is None:
@@ -198,4 +220,41 @@ def test_solver_equals_per_body_oracle(seed: int) -> None:
             assert abs(f.engine_torque - exp.torque) <= TOL_REL * exp.torque_scale, name
             compared += 1
     assert compared > 500
-    assert invalid > 0, "no body slept: the sleeping path was not exercised"
+
+
+def _close(a: tuple[float, float], b: tuple[float, float]) -> bool:
+    scale = max(1.0, math.hypot(*a), math.hypot(*b))
+    return math.dist(a, b) <= TOL_PATHS * scale or (a == b)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_scalar_and_vector_paths_give_one_answer(seed: int) -> None:
+    """Law: the scalar path (always, or switching at the crossover as bodies come and go) and the
+    vectorised path give the same readings and perceived gravity on every step of the same
+    random scene, within TOL_PATHS; the arrays a caller reads from ``world.solver`` and
+    ``world.perceived`` hold the scalar path's values too."""
+    runs = [scene(seed, PATHS[p]) for p in ("vector", "scalar", "switching")]
+    served = 0
+    for (ref, _, _), *others in zip(*runs, strict=True):
+        names = sorted(n for n in ref.names if ref.solver.row_of(ref.body(n)) is not None)
+        for world, _, _ in others:
+            for name in names:
+                a, b = ref.forces(name), world.forces(name)
+                assert a.valid == b.valid, name
+                for field in ("engine", "support", "specific", "passive", "applied"):
+                    assert _close(getattr(a, field), getattr(b, field)), (name, field)
+                assert _close((a.engine_torque, 0.0), (b.engine_torque, 0.0)), name
+                assert _close(ref.perceived_gravity(name), world.perceived_gravity(name)), name
+                assert _close(ref.perceived_up(name), world.perceived_up(name)), name
+            served += world._scalar_on
+        if ref.steps % 60 == 0:
+            # The arrays are filled from the scalar path when read.
+            scalar = others[0][0]
+            for name in names:
+                row = scalar.solver.row_of(scalar.body(name))
+                assert row is not None
+                g = scalar.perceived.gravity[row]
+                assert _close((float(g[0]), float(g[1])), scalar.perceived_gravity(name)), name
+                e = scalar.solver.engine[row]
+                assert _close((float(e[0]), float(e[1])), scalar.forces(name).engine), name
+    assert served > STEPS  # the scalar path served every step of one run, some of the other

@@ -159,6 +159,7 @@ def _measure(quick: bool, progress: bool, command: str) -> performance.Measureme
             levels=QUICK_LEVELS,
             sizes=QUICK_SIZES,
             field_bodies=QUICK_SIZES[-1],
+            crossover=(1, 32),
             repeats=QUICK_REPEATS,
             progress=progress,
             command=command,

@@ -12,7 +12,7 @@ it holds on a loaded machine where absolute microseconds move by 2×:
 
 :func:`measure` runs them all and judges :data:`GOALS`; :func:`performance_doc` writes the page.
 
->>> m = measure(levels=("rest",), sizes=(10,), field_bodies=10, repeats=1)
+>>> m = measure(levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), repeats=1)
 >>> [g.key for g in m.goals][:2]
 ['one_player_us', 'one_player_rt']
 """
@@ -35,6 +35,7 @@ from playground.bench.blocks import Blocks, interleave
 from playground.bench.pile import floor_length, pile_names, pile_space, pile_world
 from playground.gravity import Radial
 from playground.perception import Perception
+from playground.scalar import SCALAR_MAX_BODIES
 from playground.world import Stage, World, WorldConfig
 
 __all__ = [
@@ -53,6 +54,9 @@ __all__ = [
 
 PILE_SIZES = (10, 100, 1000, 3000)
 """Pile sizes measured by default (the goals quote 10, 1000 and 3000)."""
+
+CROSSOVER_SIZES = (1, 2, 4, 8, 12, 16, 20, 24, 32, 48)
+"""Tracked bodies at which the scalar path is timed against the vectorised one."""
 
 FIELD_BODIES = 1000
 """Boxes in the pile on which a per-body gravity field is timed against uniform gravity."""
@@ -81,6 +85,7 @@ class LevelRow:
         ratio: level / engine, median of paired blocks.  ratio_lo, ratio_hi: their spread.
         realtime: dt / level step: simulated seconds per wall second.
         stages: median µs of each stage over the steps it ran in, by lower-case stage name.
+        scalar: its tracked bodies are served by the scalar path (plain floats), not numpy.
     """
 
     level: str
@@ -93,6 +98,7 @@ class LevelRow:
     ratio_hi: float
     realtime: float
     stages: dict[str, float]
+    scalar: bool
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,8 +107,9 @@ class PileRow:
 
     Attributes:
         kind: ``solver+1€`` (every box tracked and perceived against bare steps of the same
-            space), ``field`` (a per-body radial field against uniform gravity) or ``no effect``
-            (a world against a bare space holding the same pile).
+            space), ``field`` (a per-body radial field against uniform gravity), ``no effect``
+            (a world against a bare space holding the same pile) or ``scalar/vector`` (the
+            scalar path against the vectorised one, every box tracked and perceived).
         bodies: boxes.  us: the measured side, µs per step.  base_us: what it is compared with.
         ratio: us / base_us, median of paired blocks.  ratio_lo, ratio_hi: their spread.
         overhead: ratio − 1.
@@ -189,6 +196,7 @@ def from_dict(data: dict[str, Any], source: str = "<data>") -> Measurement:
                 ratio_hi=num(r["ratio_hi"]),
                 realtime=num(r["realtime"]),
                 stages={str(k): num(v) for k, v in r["stages"].items()},
+                scalar=bool(r["scalar"]),
             )
             for r in data["levels"]
         )
@@ -273,6 +281,7 @@ def level_row(name: str, repeats: int = REPEATS) -> LevelRow:
         ratio_hi=hi,
         realtime=world.config.dt / (level_us * 1e-6),
         stages=stages,
+        scalar=world._scalar_on,
     )
 
 
@@ -315,6 +324,21 @@ def solver_row(n: int, repeats: int = REPEATS) -> PileRow:
     )
 
 
+def crossover_row(n: int, repeats: int = REPEATS) -> PileRow:
+    """The scalar path against the vectorised one, every box tracked and perceived (the default
+    perception): where the ratio passes 1 is where the world should switch."""
+    worlds = []
+    for most in (n, 0):
+        world = pile_world(n, WorldConfig())
+        world.scalar_max_bodies = most
+        world.track(*pile_names(n))
+        worlds.append(world)
+    _settle(worlds[0].step, worlds[1].step)
+    return _pile_row(
+        "scalar/vector", n, interleave(worlds[0].step, worlds[1].step, repeats=repeats)
+    )
+
+
 def field_row(n: int, repeats: int = REPEATS) -> PileRow:
     """A per-body radial field against uniform ``space.gravity``, on two untracked piles. The
     planet is so large that its surface is flat under the pile (tilt < 0.2° at its ends): the
@@ -349,9 +373,10 @@ GOALS = (
         25.0,
         True,
         "µs",
-        "Fixed Python and numpy cost per step, not physics: {stages}. The physics stage is the "
-        "engine plus two batch reads and the ledger's writes; forces and filter are a few dozen "
-        "numpy calls (about 1 µs each) and batch calls (about 5 µs) whatever the body count.",
+        "Python cost per step, not physics: {stages}. The controller is most of it (its step in "
+        "plain floats is not done yet). {vector} keep the vectorised solver (the scalar path "
+        "splits no contacts and writes no per-body field), whose physics, forces and filter "
+        "stages are a few dozen numpy calls (about 1 µs each) and batch calls (about 5 µs).",
     ),
     Goal(
         "one_player_rt",
@@ -390,8 +415,9 @@ GOALS = (
         3.0,
         True,
         "×",
-        "Two batch reads, a batch write and a few dozen numpy calls per step cost far more "
-        "than a bare step of ten boxes.",
+        "Ten tracked bodies are on the scalar path: {per_body} µs of Python per body per step "
+        "(attribute reads through cffi before and after the step, reverse integration, "
+        "median-of-3 and 1€ in floats), against {bare_per_body} µs per box for the bare step.",
     ),
     Goal(
         "pile_large",
@@ -445,6 +471,21 @@ def _where(levels: Sequence[LevelRow]) -> str:
     parts = [f"{s} {v:.0f} µs" for s, v in sorted(med.items(), key=lambda kv: -kv[1]) if v >= 1]
     engine = statistics.median(r.engine_us for r in levels) if levels else math.nan
     return "median stages " + ", ".join(parts) + f"; the engine's step {engine:.1f} µs"
+
+
+def _facts(
+    one: Sequence[LevelRow], levels: Sequence[LevelRow], solver: dict[int, PileRow]
+) -> dict[str, str]:
+    """The measured facts the goals' explanations quote."""
+    vector = [r.level for r in levels if not r.scalar and r.players]
+    small = solver.get(10)
+    return {
+        "stages": _where(one),
+        "engine": _engine_share(levels),
+        "vector": ("Levels " + ", ".join(vector)) if vector else "No level",
+        "per_body": f"{(small.us - small.base_us) / 10:.1f}" if small else "?",
+        "bare_per_body": f"{small.base_us / 10:.1f}" if small else "?",
+    }
 
 
 def _engine_share(levels: Sequence[LevelRow]) -> str:
@@ -503,7 +544,7 @@ def judge(levels: Sequence[LevelRow], piles: Sequence[PileRow]) -> tuple[GoalRes
         value, detail = found[g.key]
         met = value <= g.target if g.at_most else value >= g.target
         off = value / g.target if g.at_most else g.target / value
-        why = "" if met else g.why.format(stages=_where(one), engine=_engine_share(levels))
+        why = "" if met else g.why.format(**_facts(one, levels, solver))
         out.append(GoalResult(g.key, g.measure, g.text, value, detail, met, off, why))
     return tuple(out)
 
@@ -536,6 +577,7 @@ def measure(
     sizes: Sequence[int] = PILE_SIZES,
     *,
     field_bodies: int = FIELD_BODIES,
+    crossover: Sequence[int] = CROSSOVER_SIZES,
     repeats: int = REPEATS,
     progress: bool = False,
     command: str = "playground bench overhead --json",
@@ -552,6 +594,7 @@ def measure(
         *(lambda n=n: solver_row(n, repeats) for n in sizes),
         lambda: field_row(field_bodies, repeats),
         *(lambda n=n: no_effect_row(n, repeats) for n in sorted({min(sizes), field_bodies})),
+        *(lambda n=n: crossover_row(n, repeats) for n in crossover),
     ]
     bar = _bar(len(jobs)) if progress else None
     rows = []
@@ -606,6 +649,7 @@ def levels_markdown(levels: Sequence[LevelRow]) -> str:
         [
             r.level,
             str(r.players),
+            "scalar" if r.scalar else "vector",
             f"{r.level_us:.0f}",
             f"{r.engine_us:.1f}",
             f"{r.ratio:.0f}× ({r.ratio_lo:.0f}–{r.ratio_hi:.0f})",
@@ -614,8 +658,8 @@ def levels_markdown(levels: Sequence[LevelRow]) -> str:
         ]
         for r in levels
     ]
-    header = ["level", "players", "step µs", "engine µs", "× engine (blocks)", "× real time",
-              *(f"{s} µs" for s in used)]  # fmt: skip
+    header = ["level", "players", "path", "step µs", "engine µs", "× engine (blocks)",
+              "× real time", *(f"{s} µs" for s in used)]  # fmt: skip
     return _table(header, rows)
 
 
@@ -635,12 +679,52 @@ def piles_markdown(piles: Sequence[PileRow]) -> str:
     return _table(["measure", "N", "µs", "compared with, µs", "ratio (blocks)", "overhead"], rows)
 
 
+def crossover_markdown(piles: Sequence[PileRow]) -> str:
+    """Where the scalar path stops paying: the measured ratios and the crossover they give."""
+    rows = sorted((r for r in piles if r.kind == "scalar/vector"), key=lambda r: r.bodies)
+    if not rows:
+        return ""
+    below = [r.bodies for r in rows if r.ratio < 1.0]
+    above = [r.bodies for r in rows if r.ratio >= 1.0]
+    cross = (
+        f"the scalar path is cheaper up to {max(below)} tracked bodies"
+        + (f" and dearer from {min(above)}" if above else "")
+        if below
+        else "the scalar path is never cheaper"
+    )
+    return (
+        "## Two paths: where the scalar one stops paying\n\n"
+        "With few tracked bodies the solver and the filter run in plain floats, reading each "
+        "body's attributes (`playground/scalar.py`); with many, on numpy arrays filled by "
+        "`pymunk.batch`. "
+        "Both give the same readings (tests/test_solver_oracle.py compares them step by step on "
+        "random scenes). Measured here on the pile with every box tracked and perceived, scalar "
+        f"step / vectorised step: {cross}. The world switches at "
+        f"`SCALAR_MAX_BODIES` = {SCALAR_MAX_BODIES} tracked bodies.\n\n"
+        + _table(
+            ["tracked bodies", "scalar µs", "vectorised µs", "scalar / vectorised (blocks)"],
+            [
+                [
+                    str(r.bodies),
+                    f"{r.us:.0f}",
+                    f"{r.base_us:.0f}",
+                    f"{r.ratio:.2f}× ({r.ratio_lo:.2f}–{r.ratio_hi:.2f})",
+                ]
+                for r in rows
+            ],
+        )
+        + "\n"
+    )
+
+
 def summary_markdown(m: Measurement) -> str:
-    """The goals, levels and pile tables under headings."""
+    """The goals, levels, pile and crossover tables under headings."""
+    piles = [r for r in m.piles if r.kind != "scalar/vector"]
+    cross = crossover_markdown(m.piles)
     return (
         f"## The goals\n\n{goals_markdown(m.goals)}\n\n"
         f"## Every shipped level\n\n{levels_markdown(m.levels)}\n\n"
-        f"## The pile\n\n{piles_markdown(m.piles)}\n"
+        f"## The pile\n\n{piles_markdown(piles)}\n" + (f"\n{cross}" if cross else "")
     )
 
 

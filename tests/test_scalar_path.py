@@ -1,0 +1,105 @@
+"""The scalar path stays scalar: a step of a world with one tracked body calls neither numpy nor
+``pymunk.batch`` (counted through patched modules), so the fast path cannot silently regress."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+from typing import Any
+
+import numpy
+import pymunk.batch
+import pytest
+
+from playground import Stage, World, WorldConfig
+from playground.guard import GUARD_EVERY
+
+TOL_SETTLING = 1e-3
+"""Relative: the box still settles half a second after it is placed (its support reads
+−0.6 mN sideways on 19.6 N); a thousandth says it reads its weight and feels g."""
+
+CORE = ("_batch", "filters", "forces", "gravity", "guard", "perception", "scalar", "world")
+"""Modules of the step that import numpy as ``np`` (patched with a counting stand-in)."""
+
+
+class Counting:
+    """Stands in for a module: every function (and ufunc) read from it counts its calls."""
+
+    def __init__(self, module: Any, calls: list[str]) -> None:
+        self._module = module
+        self._calls = calls
+
+    def __getattr__(self, name: str) -> Any:
+        value = getattr(self._module, name)
+        if not callable(value) or isinstance(value, type):
+            return value  # constants, and dtypes (passed as dtype=, compared with is)
+        calls = self._calls
+
+        def counted(*args: Any, **kwargs: Any) -> Any:
+            calls.append(name)
+            return value(*args, **kwargs)
+
+        return counted
+
+
+def counting(monkeypatch: pytest.MonkeyPatch) -> tuple[list[str], list[str]]:
+    """Patch numpy in the step's modules and the batch functions; returns the two call logs."""
+    np_calls: list[str] = []
+    batch_calls: list[str] = []
+    stand_in = Counting(numpy, np_calls)
+    for name in CORE:
+        module = importlib.import_module(f"playground.{name}")
+        if hasattr(module, "np"):
+            monkeypatch.setattr(module, "np", stand_in)
+    for name in ("get_space_bodies", "set_space_bodies", "get_space_arbiters"):
+        original: Callable[..., Any] = getattr(pymunk.batch, name)
+
+        def counted(*args: Any, _f: Callable[..., Any] = original, _n: str = name) -> Any:
+            batch_calls.append(_n)
+            return _f(*args)
+
+        monkeypatch.setattr(pymunk.batch, name, counted)
+    return np_calls, batch_calls
+
+
+def one_box() -> World:
+    """A box resting on a floor, tracked and perceived; uniform gravity, the default config."""
+    world = World(WorldConfig(timing=False))
+    world.add_static_segment((-5.0, 0.0), (5.0, 0.0), radius=0.05)
+    world.add_box("box", mass=2.0, size=(0.5, 0.5), position=(0.0, 0.3))
+    world.track("box")
+    return world
+
+
+def test_one_tracked_body_steps_without_numpy_or_batch(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Law: between the every-GUARD_EVERY-steps check of all bodies (one batch read), a step of a
+    world with one tracked, perceived body makes no numpy call and no batch call, and still
+    reads the box's support (its weight) and perceived gravity (g)."""
+    world = one_box()
+    ran: list[Stage] = []
+    world.on(Stage.OBSERVE, lambda w: ran.append(Stage.OBSERVE))
+    while world.steps % GUARD_EVERY != 1:  # start just after a full check
+        world.step()
+    np_calls, batch_calls = counting(monkeypatch)
+    for _ in range(GUARD_EVERY - 2):
+        world.step()
+    assert np_calls == []
+    assert batch_calls == []
+    # It did the work: a reading and perceived gravity, as the vectorised path gives them.
+    f = world.forces("box")
+    assert f.valid
+    assert f.support == pytest.approx((0.0, 2.0 * 9.81), abs=TOL_SETTLING * 2.0 * 9.81)
+    assert world.perceived_gravity("box") == pytest.approx((0.0, -9.81), abs=TOL_SETTLING * 9.81)
+    world.step()  # the full check: its one batch read, nothing else
+    world.step()
+    assert batch_calls == ["get_space_bodies"]
+
+
+def test_the_count_sees_the_vectorised_path(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The counting itself works: with the scalar path off, the same steps call both."""
+    world = one_box()
+    world.scalar_max_bodies = 0
+    world.step()
+    np_calls, batch_calls = counting(monkeypatch)
+    world.step()
+    assert np_calls and batch_calls
