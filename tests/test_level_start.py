@@ -21,6 +21,11 @@ TOL_REL = 1e-9
 """At rest at ride height the hover's spring term is exactly 0 and its feed-forward is the
 weight: the reading differs from m·g only by float rounding."""
 
+STAND_WINDOW = 0.2
+"""m: a player placed at rest this close to its ride height over the ground is placed to stand on
+it (the shipped levels' misplacements were 5 and 10 cm); one placed further up is dropped, and a
+drop is not a load-time kick."""
+
 START_STEPS = 12
 """0.1 s at the default dt: before anything in a shipped level reaches a player placed at rest
 (the earliest event, the seesaw's plank tipping under the player, unloads it)."""
@@ -40,7 +45,7 @@ STARTS = [
 
 
 def test_the_issue_levels_are_covered() -> None:
-    """The levels where the kick was found place a player at rest."""
+    """The levels where the kick was found place a player at rest (to stand: none is skipped)."""
     levels = {level for level, _ in STARTS}
     assert {"elevator", "moving_platform", "rotating_room", "rest"} <= levels
 
@@ -56,8 +61,10 @@ def test_player_placed_at_rest_reads_its_weight(level: str, name: str) -> None:
     assert at_rest(ctrl)
     world.step()
     hit = ctrl.probe
-    assert ctrl.state is State.GROUNDED and hit is not None, (level, name, ctrl.state)
     ride = ctrl.config.ride_height
+    if hit is None or hit.distance - ride > STAND_WINDOW:
+        pytest.skip(f"{level}: {name} is placed in the air, to fall")
+    assert ctrl.state is State.GROUNDED, (level, name, ctrl.state)
     assert abs(hit.distance - ride) <= 1e-9, (
         f"{level}: {name} starts {hit.distance - ride:+.4f} m off its ride height {ride} m "
         "(place its centre ride_height above the ground's surface, segment radius included)"
