@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import copy
 import json
+import re
 import tomllib
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -73,7 +75,32 @@ def test_reference_errors_are_reported_beside_structural_errors() -> None:
 
 # -- the property: the same random documents to `check` and to a JSON-schema validator ---------
 
-VALIDATOR = jsonschema.Draft202012Validator(schema())
+
+def test_a_name_ending_in_a_newline_is_refused_by_both() -> None:
+    """Names match their pattern to the end of the string: ``"crate\\n"`` is not a name, for the
+    schema (ECMA-262 ``$``) and for ``check`` alike. Found by the property test below."""
+    doc = tomllib.loads(BASE + CRATE.format(mass="10.0").replace('"crate"', '"crate\\n"'))
+    assert doc["props"][0]["name"] == "crate\n"
+    assert not _schema_accepts(doc)
+    with pytest.raises(LevelError):
+        validate(doc, "newline.toml")
+
+
+def _ecma_pattern(
+    validator: Any, pattern: str, instance: Any, _schema: dict[str, Any]
+) -> Iterator[jsonschema.ValidationError]:
+    """``pattern`` as JSON Schema defines it (ECMA-262, no multiline flag): ``$`` is the end of
+    the string. Python's ``re`` lets ``$`` match before a final newline, so jsonschema's default
+    would accept the name ``"A\\n"`` that editors and ``check`` refuse."""
+    if validator.is_type(instance, "string") and not re.search(
+        re.sub(r"(?<!\\)\$$", r"\\Z", pattern), instance
+    ):
+        yield jsonschema.ValidationError(f"{instance!r} does not match {pattern!r}")
+
+
+VALIDATOR = jsonschema.validators.extend(
+    jsonschema.Draft202012Validator, {"pattern": _ecma_pattern}
+)(schema())
 LEVEL_DOCS = [
     tomllib.loads(Path(p).read_text(encoding="utf-8")) for _, p in sorted(shipped().items())
 ]
