@@ -51,6 +51,7 @@ ROLL_SHOWN_RAD = math.radians(0.5)  # the compass appears once the camera rolls 
 NULLIFY_RING_M = 1.2  # m: radius of the ring around the body X would nullify …
 NULLIFY_RING_MIN_PX = 14.0  # px: … at least this big on screen
 LABEL_MIN_N = 0.5  # N: joint forces smaller than this are not labelled
+LABEL_FONT_PX = 18  # px: size of the joint-force labels
 
 OVERLAY_KEYS: dict[int, tuple[str, str]] = {
     pygame.K_v: ("vectors", "forces"),
@@ -126,6 +127,7 @@ class Painter:
         self.compass_centre: Vec = (0.0, 0.0)
         self.nullify_px = 0.0
         """Radius of the nullify ring drawn last frame, px (0: none)."""
+        self._label_font: pygame.font.Font | None = None
 
     def sample(self, world: World) -> None:
         """Call after every physics step (feeds the peak hold)."""
@@ -314,8 +316,10 @@ class Painter:
             if all(math.isfinite(v) for v in vector) and len(body.constraints) == 1:
                 out += self._arrow(cam, (p.x, p.y), vector, body.mass, w_px, "joint_force", 3)
             if magnitude >= LABEL_MIN_N:
-                font = pygame.font.Font(None, 18)
-                label = font.render(f"{magnitude:.0f} N", True, COLOURS["joint_force"])
+                if self._label_font is None:
+                    self._label_font = pygame.font.Font(None, LABEL_FONT_PX)
+                text = f"{magnitude:.0f} N"
+                label = self._label_font.render(text, True, COLOURS["joint_force"])
                 sp = cam.to_screen((p.x, p.y))
                 surf.blit(label, (sp[0] + 8, sp[1] - 16))
                 self.drawn.add("joint_force")
