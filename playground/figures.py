@@ -930,6 +930,24 @@ def ch6_null_perceived() -> float:
     return float(null_run()[-1, 2])
 
 
+def ch6_null_before() -> float:
+    """The enemy's |perceived gravity| while it patrols (t in [0.2, 0.45] s), m/s²."""
+    r = null_run()
+    window = (r[:, 0] >= 0.2) & (r[:, 0] <= 0.45)
+    return float(np.mean(r[window, 2]))
+
+
+def ch6_null_budget_accel() -> float:
+    """The patrol's acceleration at the drive budget: ground_force / mass, m/s²."""
+    c = ControllerConfig()
+    return c.ground_force / c.mass
+
+
+def ch6_null_before_expected() -> float:
+    """√(g² + (ground_force/m)²): what a body feels while its drive pushes at budget, m/s²."""
+    return math.hypot(G, ch6_null_budget_accel())
+
+
 def ch6_null_speed_change() -> float:
     """Largest change of the enemy's speed after t = 1.5 s, m/s."""
     r = null_run()
@@ -1796,6 +1814,9 @@ NUMBERS: dict[str, Callable[[], float]] = {
         ch6_final_perceived,
         ch6_null_perceived,
         ch6_null_speed_change,
+        ch6_null_before,
+        ch6_null_budget_accel,
+        ch6_null_before_expected,
         ch6_air_budget_bound,
         ch6_leap_land_time,
         ch6_leap_land_x,
@@ -1930,9 +1951,14 @@ def fig_ch2(path: Path) -> Path:
     a.plot(r[:, 0], r[:, 1], lw=3, alpha=0.5, label="reverse integration (damping included)")
     a.plot(r[:, 0], r[:, 3], "k--", lw=1, label="sum of contact impulses / dt")
     a.plot(r[:, 0], r[:, 5], color="C3", label="naive: m·Δv/dt − m·g (damping forgotten)")
+    a.set_ylim(-40.0, 10.0)
     a.set_ylabel("force x (N)")
-    a.set_title("a 10 kg box thrown at 3 m/s, damping 0.5: friction along x")
-    a.legend(fontsize=8)
+    a.set_title(
+        f"a 10 kg box thrown at 3 m/s, damping 0.5: friction along x "
+        f"(clipped: the landing reaches {np.min(r[:, 1]):.0f} N)",
+        fontsize=10,
+    )
+    a.legend(fontsize=8, loc="lower right")
     b.plot(r[:, 0], r[:, 2], lw=3, alpha=0.5, label="reverse integration")
     b.plot(r[:, 0], r[:, 4], "k--", lw=1, label="contact sum")
     b.set_ylabel("force y (N)")
@@ -1944,7 +1970,11 @@ def fig_ch2(path: Path) -> Path:
     c.set_ylim(-100, 1200)
     c.set_xlabel("time (s)")
     c.set_ylabel("force y (N)")
-    c.set_title("seesaw: the pivot carries the plank and the player")
+    c.set_title(
+        f"seesaw: the pivot carries plank and player (clipped at 1200 N; the plank hitting "
+        f"its limit: {np.max(s[:, 1]):.0f} N)",
+        fontsize=10,
+    )
     c.legend(fontsize=8)
     return _save(fig, path)
 

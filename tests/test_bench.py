@@ -180,6 +180,38 @@ def test_markdown_and_docs_are_written(rows: list[Result], tmp_path: Path) -> No
     text = (tmp_path / "accuracy.md").read_text(encoding="utf-8")
     assert report.COMMAND in text and "Pareto" in text
     assert "| scene |" in report.accuracy_markdown(rows)
+    assert "## If you want X, set Y" in text
+
+
+def test_the_settings_guide_goes_into_the_doc(rows: list[Result], tmp_path: Path) -> None:
+    """Law: with the guide's runs, accuracy.md opens with the "if you want" table, has the
+    guide's section, its figure and its fronts."""
+    pytest.importorskip("matplotlib")
+    from playground.bench import guide
+
+    knob = next(k for k in guide.KNOBS if k.name == "drive_time")
+    runs = guide.run_scenario("platform", [(None, 0.0), (knob, 0.025)])
+    over = overhead.profile(sizes=(10,), repeats=1, settle_steps=1)
+    hover = {(f, dt): 0.01 for f in guide.HOVER_FREQUENCIES for dt in guide.HOVER_DTS}
+    report.write_docs(rows, over, tmp_path, seconds=(1.0, 1.0), guide=(runs, hover, 1.0))
+    text = (tmp_path / "accuracy.md").read_text(encoding="utf-8")
+    assert text.index("## If you want X, set Y") < text.index("## The settings guide")
+    assert "accelerating platform" in text
+    assert "**platform, drift**" in text
+    assert (tmp_path / "img" / "guide.png").stat().st_size > 0
+
+
+def test_bookkeeping_scenes_stay_out_of_the_means(rows: list[Result]) -> None:
+    """Law: a scene that reads a constant back exactly (rest) is bookkeeping and no
+    configuration's mean includes it; a scene with a real error (the stack) is not."""
+    books = report.bookkeeping(rows)
+    assert "rest" in books and "stack" not in books and "hover" not in books
+    configs = report.configurations(rows)
+    base = [c for c in configs if c.label.startswith("dt 1/120×1, 10 it, reverse, none")]
+    (c,) = base
+    real = [r.error for r in rows if r.scene in {"stack", "hover"} and r.iterations == 10
+            and r.dt == 1 / 120 and r.estimator == "reverse" and r.filter == "none"]  # fmt: skip
+    assert c.error == pytest.approx(sum(real) / len(real))
 
 
 def test_cli_parses_both_subcommands() -> None:

@@ -23,6 +23,7 @@ DOCS = Path(__file__).resolve().parent.parent / "docs"
 CHAPTERS = sorted((DOCS / "chapters").glob("*.md"))
 MARKER = re.compile(r"<!-- (num|below):(\w+) -->([^<]*)<!-- /\1 -->")
 FIGURE = re.compile(r"!\[[^\]]*\]\(\.\./img/chapters/([^)]+)\)")
+GIF = re.compile(r"!\[[^\]]*\]\(\.\./img/gifs/([^)]+)\)")
 
 TOL_REL = 1e-9
 """Relative slack beyond the printed rounding: float noise across machines and BLAS builds."""
@@ -322,3 +323,28 @@ def test_chapter_10_guards_removed_are_caught() -> None:
     stopped = figures.ch10_guard_step()
     assert 0 < stopped < figures.ch10_unguarded_last_step()
     assert figures.runaway_run(False)[1] == 0 or figures.runaway_run(False)[1] > stopped
+
+
+SEED_CHAPTERS = ("01-", "02-", "06-")
+"""Chapters built on the seed post's sequences: each shows its level moving."""
+
+
+def test_seed_chapters_show_their_levels_moving() -> None:
+    """The seed-sequence chapters embed at least one GIF of a level; every embedded GIF exists,
+    is a GIF with more than one frame, and has a caption after it (what to look at)."""
+    from PIL import Image
+
+    for path in CHAPTERS:
+        text = path.read_text(encoding="utf-8")
+        shown = GIF.findall(text)
+        if path.name.startswith(SEED_CHAPTERS):
+            assert shown, f"{path.name}: no GIF"
+        for name in shown:
+            gif = DOCS / "img" / "gifs" / name
+            assert gif.read_bytes()[:6] == b"GIF89a", name
+            with Image.open(gif) as im:
+                assert im.n_frames > 1, name
+            after = text.split(f"(../img/gifs/{name})", 1)[1].splitlines()[1:]
+            # The caption follows the image (or the row of images it belongs to).
+            rest = [ln for ln in after if ln.strip() and not ln.startswith("![")]
+            assert rest and rest[0].startswith("*"), f"{path.name}: {name} has no caption"

@@ -18,7 +18,7 @@ import time
 from pathlib import Path
 
 from playground._preflight import UsageError, needs, writable
-from playground.bench import overhead, performance, report
+from playground.bench import guide, overhead, performance, report
 from playground.bench.accuracy import Result, plan, sweep
 
 __all__ = ["configure", "main", "run"]
@@ -37,9 +37,9 @@ QUICK_SIZES = (10, 1000)
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
-    """Add the ``accuracy``, ``overhead``, ``performance`` and ``docs`` subcommands."""
+    """Add the ``accuracy``, ``overhead``, ``performance``, ``guide`` and ``docs`` subcommands."""
     sub = parser.add_subparsers(
-        dest="bench", required=True, metavar="{accuracy,overhead,performance,docs}"
+        dest="bench", required=True, metavar="{accuracy,overhead,performance,guide,docs}"
     )
     acc = sub.add_parser("accuracy", help="sweep dt, iterations, estimators and filters")
     over = sub.add_parser(
@@ -69,6 +69,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     perf.add_argument("--quick", action="store_true", help="one level, small piles (to try it)")
     perf.add_argument("--no-progress", action="store_true", help="no progress bar")
+    gd = sub.add_parser("guide", help="the settings guide: knobs against game-felt measures")
+    gd.add_argument("--json", action="store_true", help="print every run as JSON on stdout")
+    gd.add_argument("--no-progress", action="store_true", help="no progress bar")
     docs = sub.add_parser("docs", help="regenerate docs/accuracy.md, its tables and figures")
     docs.add_argument("dir", type=Path, nargs="?", default=Path("docs"), help="default: docs")
     docs.add_argument("--quick", action="store_true", help="small sizes (to try the command)")
@@ -91,6 +94,8 @@ def _preflight(args: argparse.Namespace) -> None:
     if args.bench == "docs":
         needs("matplotlib", "bench docs")
         return
+    if args.bench == "guide":
+        return  # prints to stdout: nothing to check beforehand
     if args.bench == "performance":
         writable("--out", args.out)
         return
@@ -105,6 +110,15 @@ def run(args: argparse.Namespace) -> int:
     """Run the parsed ``bench`` arguments; returns the exit status."""
     _preflight(args)
     progress = not getattr(args, "no_progress", False)
+    if args.bench == "guide":
+        t0 = time.perf_counter()
+        runs = guide.guide(progress=progress)
+        hover = guide.hover_table()
+        if args.json:
+            print(report.to_json(runs))
+        else:
+            print(guide.guide_markdown(runs, hover, time.perf_counter() - t0))
+        return 0
     if args.bench == "docs":
         t0 = time.perf_counter()
         rows = _accuracy(args)
@@ -112,8 +126,16 @@ def run(args: argparse.Namespace) -> int:
         over = overhead.profile(quick=args.quick, progress=progress)
         t2 = time.perf_counter()
         fixed = overhead.fixed_cost()
+        runs = guide.guide(progress=progress)
+        hover = guide.hover_table()
+        t3 = time.perf_counter()
         for path in report.write_docs(
-            rows, over, args.dir, seconds=(t1 - t0, t2 - t1), fixed=fixed
+            rows,
+            over,
+            args.dir,
+            seconds=(t1 - t0, t2 - t1),
+            fixed=fixed,
+            guide=(runs, hover, t3 - t2),
         ):
             print(f"wrote {path}", file=sys.stderr)
         return 0

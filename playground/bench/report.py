@@ -22,6 +22,7 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 
 from playground.bench.accuracy import DTS, FILTERS, ITERATIONS, SUBSTEPS, Result
+from playground.bench.guide import Run, advice, guide_figure, guide_markdown
 from playground.bench.overhead import (
     NO_EFFECT_BUDGET,
     OverheadRow,
@@ -114,8 +115,10 @@ def _knob_table(rows: Sequence[Result], columns: Sequence[tuple[str, Knobs]]) ->
     if len(picks) < 2:
         return None
     body = []
+    books = set(bookkeeping(rows))
     for scene in SCENES:
-        body.append([scene, *(_pct(p[scene].error) if scene in p else "–" for _, p in picks)])
+        label = f"{scene} (bookkeeping)" if scene in books else scene
+        body.append([label, *(_pct(p[scene].error) if scene in p else "–" for _, p in picks)])
     body.append(
         [
             "cost, µs/step",
@@ -344,10 +347,39 @@ class Config:
     cost_ms: float
 
 
+BOOKKEEPING_ERROR = ONE_PERCENT / 10
+"""A scene whose median unfiltered reverse-integration error over the swept settings is below this
+(a tenth of what a reader calls accurate) reads a constant force back almost exactly at any
+setting: it checks the bookkeeping, and cannot rank settings."""
+
+
+def bookkeeping(rows: Sequence[Result]) -> list[str]:
+    """Scenes whose reading is a bookkeeping identity (see :data:`BOOKKEEPING_ERROR`).
+
+    >>> r = Result("rest", 0.01, 1, 10, "reverse", "none", 1e-12, 0.0, 0.0, 5.0, 4.0, 1.25)
+    >>> bookkeeping([r])
+    ['rest']
+    """
+    out = []
+    for scene in SCENES:
+        errs = [
+            r.error
+            for r in rows
+            if r.scene == scene and r.estimator == "reverse" and r.filter == "none"
+        ]
+        if errs and statistics.median(errs) < BOOKKEEPING_ERROR:
+            out.append(scene)
+    return out
+
+
 def configurations(rows: Sequence[Result]) -> list[Config]:
-    """Mean error and mean cost of each (knobs, estimator, filter) over the scenes it ran."""
+    """Mean error and mean cost of each (knobs, estimator, filter) over the scenes it ran,
+    bookkeeping scenes left out (they are ~0 for every setting and would only dilute the mean)."""
     groups: dict[tuple[Knobs, str, str], list[Result]] = {}
+    skip = set(bookkeeping(rows))
     for r in rows:
+        if r.scene in skip:
+            continue
         groups.setdefault((_knobs(r), r.estimator, r.filter), []).append(r)
     out = []
     for (k, est, filt), rs in groups.items():
@@ -411,7 +443,7 @@ def accuracy_figure(rows: Sequence[Result], path: Path) -> list[Config]:
         xscale="log",
         yscale="log",
         xlabel="cost, ms of computing per simulated second",
-        ylabel="mean relative error over scenes",
+        ylabel="mean relative error over the force scenes",
         title="Accuracy against cost",
     )
     ax.legend(fontsize=8)
@@ -467,7 +499,10 @@ def _estimator_text(rows: Sequence[Result], f: Findings) -> str:
         f"the contact split marks such steps unknown rather than trust it. The arbiter sum cannot "
         f"see a joint, so it is not run on the grip. Finite differences of positions are a median "
         f"{f.fd_over_reverse:.1f}× less accurate than reverse integration on the scenes where "
-        f"either errs (they read the step before: a one-step lag), for the same cost."
+        f"either errs, for the same cost: not because they measure worse, but because they are "
+        f"centred on their middle sample, the start of the step, half a step before the mid-step "
+        f"this page compares with (chapter 7 shows that against their own mid-point they are as "
+        f"accurate)."
     )
 
 
@@ -493,9 +528,60 @@ def _filter_text(rows: Sequence[Result]) -> str:
     )
 
 
-def accuracy_doc(rows: Sequence[Result], front: Sequence[Config], seconds: float) -> str:
-    """docs/accuracy.md: definitions, where each knob stops paying, the tables, the figure."""
+def scene_fronts(rows: Sequence[Result]) -> dict[str, list[Result]]:
+    """Per scene that is not bookkeeping: its rows no other row of the scene beats on both error
+    and cost per simulated second, cheapest first."""
+    out = {}
+    skip = set(bookkeeping(rows))
+    for scene in SCENES:
+        rs = [r for r in rows if r.scene == scene]
+        if scene in skip or not rs:
+            continue
+        idx = pareto([(r.cost_us / r.dt / 1000.0, r.error) for r in rs])
+        out[scene] = [rs[i] for i in idx]
+    return out
+
+
+def _row_label(r: Result) -> str:
+    return f"dt {_dt_label(r.dt)}×{r.substeps}, {r.iterations} it, {r.estimator}, {r.filter}"
+
+
+def accuracy_doc(
+    rows: Sequence[Result],
+    front: Sequence[Config],
+    seconds: float,
+    guide: str = "",
+    advice: Sequence[tuple[str, str]] = (),
+) -> str:
+    """docs/accuracy.md: the "if you want" table, the settings guide (when given), definitions,
+    where each knob stops paying, the tables, the figure."""
     f = findings(rows)
+    books = bookkeeping(rows)
+    fronts = "\n".join(
+        f"- **{sc}**: "
+        + ", ".join(
+            f"{_row_label(r)} ({_pct(r.error)}, {r.cost_us / r.dt / 1000:.0f} ms/s)" for r in rs[:6]
+        )
+        + (f" … ({len(rs)} in all)" if len(rs) > 6 else "")
+        for sc, rs in scene_fronts(rows).items()
+    )
+    want = [
+        *advice,
+        (
+            "a heavy stack read within 1 % (four 200 kg crates on the player)",
+            f"iterations ≥ {f.stack_iterations_1pct} ({f.stack_iterations_01pct} for 0.1 %)",
+        ),
+        (
+            "the hover's support force within 1 % of the exact oscillator",
+            f"dt ≤ {_dt_text(f.hover_dt)}"
+            + (
+                " (substeps do worse at the same inner step: the controller acts once per step)"
+                if f.substep_hover[0] > f.substep_hover[1]
+                else ""
+            ),
+        ),
+    ]
+    want_table = "\n".join(f"| {x} | {y} |" for x, y in want)
     per_scene = ", ".join(f"{s} {_dt_text(dt)}" for s, dt in f.dt_1pct.items())
     stack = ", ".join(f"{i}: {_pct(e)}" for i, e in f.stack_errors)
     hover = ", ".join(f"{_dt_label(dt)}: {_pct(e)}" for dt, e in f.hover_errors)
@@ -517,11 +603,31 @@ def accuracy_doc(rows: Sequence[Result], front: Sequence[Config], seconds: float
     front_lines = "\n".join(f"| {c.label} | {_pct(c.error)} | {c.cost_ms:.0f} |" for c in front)
     return f"""# What accuracy costs
 
-Generated by `{COMMAND}` ({len(rows)} rows, {seconds:.0f} s on this machine); the full table is
-[accuracy.csv](accuracy.csv) and [accuracy.json](accuracy.json). Rerun it to refresh every number
-on this page and the figure.
+Generated by `{COMMAND}` ({len(rows)} rows, {seconds:.0f} s on this machine, plus the settings
+guide); the full table is [accuracy.csv](accuracy.csv) and [accuracy.json](accuracy.json). Rerun
+it to refresh every number on this page and the figures.
+
+## If you want X, set Y
+
+Read off the runs below (one knob moved at a time from the defaults; costs on this machine):
+
+| if you want | set |
+|---|---|
+{want_table}
+
+{guide}
+## Force readings against exact answers
 
 ![error against cost, Pareto front; error against dt and iterations](img/accuracy.png)
+
+**Bookkeeping scenes**: {", ".join(books) or "none"}. Each reads a constant force back almost
+exactly at any setting (median error under {_pct(BOOKKEEPING_ERROR)}), so they check the
+bookkeeping but cannot rank settings: they stay in the tables, marked "(bookkeeping)", and out of
+every front and mean below.
+
+### Per-scene fronts (cheapest first; error, ms of computing per simulated second)
+
+{fronts}
 
 ## Where each knob stops paying
 
@@ -550,6 +656,8 @@ on this page and the figure.
 
 - **error**: RMS over the measured window of |F̂ − F*| / scale, with F̂ the (filtered) support force
   reading and F* the exact one (scale: the scene's force, e.g. m·g at rest, k·x₀ for the hover).
+  A reading is the mean force over a step, so every scene takes F* at the middle of the step
+  (chapter 7: against the end of the step a force turning at ω shows an error of ω·dt/2).
   For the landing: |Σ F̂·dt − m·g·T| / (m·√(2gh)), the impulse error over the window T.
 - **jitter** (Casiez et al. 2012): standard deviation of the residual F̂ − F* over the window,
   / scale; on a static scene, the spread of the filtered signal at rest.
@@ -564,7 +672,7 @@ simulated once and every filter runs over its recorded signal. Points run on any
 `concurrent.futures.Executor` (processes by default), so a Dask cluster runs a large sweep
 unchanged: `sweep(plan(), executor=distributed.Client(...).get_executor())`.
 
-## Pareto front (mean over scenes)
+## Pareto front (mean over the scenes that are not bookkeeping)
 
 | configuration | mean error | ms per simulated s |
 |---|---|---|
@@ -617,11 +725,13 @@ def write_docs(
     *,
     seconds: tuple[float, float],
     fixed: tuple[float, float] = (math.nan, math.nan),
+    guide: tuple[Sequence[Run], dict[tuple[float, float], float], float] | None = None,
 ) -> list[Path]:
     """Write accuracy.md with its CSV and JSON files and figures under ``out`` (img/ beside).
 
     ``seconds``: wall time of the sweep and of the overhead profile, quoted in the page;
-    ``fixed``: :func:`~playground.bench.overhead.fixed_cost`.
+    ``fixed``: :func:`~playground.bench.overhead.fixed_cost`; ``guide``: the settings guide's
+    runs, its hover table and its wall time (:mod:`playground.bench.guide`), if it was run.
     """
     out.mkdir(parents=True, exist_ok=True)
     written = []
@@ -632,7 +742,17 @@ def write_docs(
     front = accuracy_figure(rows, out / "img" / "accuracy.png")
     overhead_figure(over, out / "img" / "accuracy_overhead.png")
     written += [out / "img" / "accuracy.png", out / "img" / "accuracy_overhead.png"]
-    text = accuracy_doc(rows, front, seconds[0]) + overhead_doc(over, seconds[1], fixed)
+    section, wants = "", []
+    if guide is not None:
+        runs, hover, guide_seconds = guide
+        guide_figure(runs, out / "img" / "guide.png")
+        (out / "accuracy_guide.json").write_text(to_json(runs), encoding="utf-8")
+        written += [out / "img" / "guide.png", out / "accuracy_guide.json"]
+        section = guide_markdown(runs, hover, guide_seconds)
+        wants = advice(runs)
+    text = accuracy_doc(rows, front, seconds[0], section, wants) + overhead_doc(
+        over, seconds[1], fixed
+    )
     (out / "accuracy.md").write_text(text, encoding="utf-8")
     written.append(out / "accuracy.md")
     return written
