@@ -35,15 +35,20 @@ def bounded(name: str, value: float, limit: float, unit: str) -> None:
     ...
     ValueError: speed: expected a finite number within ±1000 m/s, got 2000.0
     """
-    if (
+    if _out_of_bounds(value, limit):
+        raise ValueError(
+            f"{name}: expected a finite number within ±{limit:g} {unit}, got {value!r}"
+        )
+
+
+def _out_of_bounds(value: float, limit: float) -> bool:
+    """What :func:`bounded` refuses: not a real number, not finite, or beyond ±``limit``."""
+    return (
         isinstance(value, bool)
         or not isinstance(value, int | float)
         or not math.isfinite(value)
         or abs(value) > limit
-    ):
-        raise ValueError(
-            f"{name}: expected a finite number within ±{limit:g} {unit}, got {value!r}"
-        )
+    )
 
 
 def in_range(name: str, value: float, low: float, high: float, unit: str) -> None:
@@ -68,7 +73,9 @@ def bounded_vec(name: str, value: Sequence[float], limit: float, unit: str) -> N
     if n != 2:
         raise ValueError(f"{name}: expected a 2-vector (x, y) in {unit}, got {value!r}")
     for i, v in enumerate(value):
-        bounded(f"{name}[{i}]", v, limit, unit)
+        # The element's name is formatted only for the error: this check runs on every force.
+        if _out_of_bounds(v, limit):
+            bounded(f"{name}[{i}]", v, limit, unit)
 
 
 def unit(name: str, value: Sequence[float]) -> tuple[float, float]:

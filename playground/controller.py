@@ -341,6 +341,11 @@ class Controller:
         self._getup_from = 0.0
         self._gravity_wish: Vec | None = None
         self._nullify_wish: str | None = None
+        # The body's state, read once at the start of each control step: position (m), velocity
+        # (m/s), mass (kg). Nothing in the control stage moves a body (forces go to the ledger
+        # until the physics stage), and each read from pymunk builds a new Vec2d.
+        self._px = self._py = self._vx = self._vy = 0.0
+        self._m = config.mass
 
         self.removed = False
         if source is not None:
@@ -425,6 +430,11 @@ class Controller:
         dt = world.config.dt
         t = world.time
         it = self.intent
+        p = body.position
+        self._px, self._py = p.x, p.y
+        v = body.velocity
+        self._vx, self._vy = vx, vy = v.x, v.y
+        self._m = float(body.mass)
         self._gravity_actions(world, it)
         gx, gy = self._gravity(world)
 
@@ -454,7 +464,6 @@ class Controller:
             self._jump_pressed_at = t
         self._jump_held = it.jump
 
-        vx, vy = body.velocity
         gvx, gvy = hit.frame_velocity if hit is not None else _ZERO
         v_up = (vx - gvx) * ux + (vy - gvy) * uy
         if self._rising and (v_up <= 0.0 or hit is None):
@@ -520,19 +529,20 @@ class Controller:
     def _probe(self, world: World, ux: float, uy: float) -> GroundHit | None:
         """Sweep a circle from the centre along −up; the nearest other shape is the ground."""
         cfg = self.config
-        p = self.body.position
+        px, py = self._px, self._py
         length = cfg.probe_length
         # Every hit, then the nearest: with a radius, pymunk 7.3.1's segment_query_first can
         # return a farther shape (inside a 64-segment ring it reports a neighbouring chord's end
         # cap, normal 40° off, while the chord under the probe is 7 cm nearer).
         hits = world.space.segment_query(
-            (p.x, p.y), (p.x - ux * length, p.y - uy * length), cfg.probe_radius, self._filter
+            (px, py), (px - ux * length, py - uy * length), cfg.probe_radius, self._filter
         )
-        info = min(
-            (h for h in hits if h.shape is not None and not h.shape.sensor),
-            key=lambda h: h.alpha,
-            default=None,
-        )
+        info: pymunk.SegmentQueryInfo | None = None
+        for h in hits:
+            shape = h.shape
+            # Strictly nearer only: of equally near hits the first wins (as min() would pick).
+            if shape is not None and not shape.sensor and (info is None or h.alpha < info.alpha):
+                info = h
         if info is None or info.shape is None or info.shape.body is None:
             self._ground_motion = None
             return None
@@ -550,7 +560,7 @@ class Controller:
         turn = ground.angular_velocity * dt
         cos_t, sin_t = math.cos(turn), math.sin(turn)
         cog = ground.local_to_world(ground.center_of_gravity)
-        dx, dy = p.x - cog.x, p.y - cog.y
+        dx, dy = px - cog.x, py - cog.y
         rx = (cos_t * dx - sin_t * dy - dx) / dt
         ry = (sin_t * dx + cos_t * dy - dy) / dt
         v = ground.velocity
@@ -559,7 +569,7 @@ class Controller:
             body=ground,
             point=(hx, hy),
             normal=(nx, ny),
-            distance=(p.x - hx) * ux + (p.y - hy) * uy,
+            distance=(px - hx) * ux + (py - hy) * uy,
             ground_velocity=(gv.x, gv.y),
             walkable=nx * ux + ny * uy >= self._cos_slope,
             frame_velocity=(v.x + rx, v.y + ry),
@@ -578,12 +588,12 @@ class Controller:
         kinematic ground (zero otherwise, and on the first step over a new ground): a dynamic
         ground's change of velocity is partly our own reaction on it.
         """
-        v = ground.velocity
-        w = ground.angular_velocity
-        prev = self._ground_motion
         if ground.body_type != pymunk.Body.KINEMATIC:
             self._ground_motion = None
             return _ZERO
+        v = ground.velocity
+        w = ground.angular_velocity
+        prev = self._ground_motion
         self._ground_motion = (ground, v.x, v.y, w)
         if prev is None or prev[0] is not ground:
             return _ZERO
@@ -658,7 +668,7 @@ class Controller:
 
     def _is_still(self, hit: GroundHit | None) -> bool:
         cfg = self.config
-        vx, vy = self.body.velocity
+        vx, vy = self._vx, self._vy
         gx, gy = hit.frame_velocity if hit is not None else _ZERO
         spin = self.body.angular_velocity - (hit.body.angular_velocity if hit is not None else 0.0)
         return math.hypot(vx - gx, vy - gy) < cfg.settle_speed and abs(spin) < cfg.settle_spin
@@ -679,7 +689,7 @@ class Controller:
             target = self._getup_from + (target - self._getup_from) * s * s * (3.0 - 2.0 * s)
         nx, ny = hit.normal
         height = self._height(hit)
-        vx, vy = self.body.velocity
+        vx, vy = self._vx, self._vy
         # The height's rate of change over a rigidly moving ground is the velocity relative to the
         # ground's frame at our centre along n: the hit point's own velocity also carries
         # ω × (centre − hit), which on a turning floor with a slanted normal (a ring's chord
@@ -689,22 +699,24 @@ class Controller:
         # The weight felt in the ground's frame (gravity minus the frame's acceleration: inside a
         # spinning ring, the centrifugal m·ω²·r) as feed-forward: it rests exactly at ride height.
         ax, ay = hit.frame_acceleration
-        m = self.mass
+        m = self._m
         weight = m * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
         wc = world.config
-        k, c = self.hover_stiffness, self.hover_damping_coefficient
+        # hover_stiffness and hover_damping_coefficient, from the one mass read above.
+        omega = self._omega
+        k = m * omega * omega
+        c = 2.0 * cfg.hover_damping * m * omega
         spring = hover_spring(k, c, m, target - height, v_n, wc.dt, wc.substeps)
         f = min(cfg.hover_force, max(0.0, weight + spring))
         if f > 0.0:
             fx, fy = f * nx, f * ny
             world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
-            world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=Category.SUPPORT)
+            _react(world, hit.body, fx, fy, hit.point)
         return f
 
     def _height(self, hit: GroundHit) -> float:
         """Height of the centre over the hit point along the ground normal, m."""
-        p = self.body.position
-        return (p.x - hit.point[0]) * hit.normal[0] + (p.y - hit.point[1]) * hit.normal[1]
+        return (self._px - hit.point[0]) * hit.normal[0] + (self._py - hit.point[1]) * hit.normal[1]
 
     def _drive(
         self,
@@ -719,7 +731,7 @@ class Controller:
         cfg = self.config
         nx, ny = hit.normal
         tx, ty = ny, -nx  # the surface tangent: its normal rotated by −90°
-        vx, vy = self.body.velocity
+        vx, vy = self._vx, self._vy
         # Relative to the ground's frame at our centre, not to the hit point: on a turning floor
         # the hit point, ride height further from the axis, moves faster than standing still.
         gvx, gvy = hit.frame_velocity
@@ -732,20 +744,20 @@ class Controller:
             (gx - ax) * tx + (gy - ay) * ty
         )
         budget = min(cfg.ground_force, cfg.traction * hover)
-        f = max(-budget, min(budget, self.mass * accel))
+        f = max(-budget, min(budget, self._m * accel))
         if f == 0.0:
             return _ZERO
         fx, fy = f * tx, f * ty
         world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
-        world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=Category.SUPPORT)
+        _react(world, hit.body, fx, fy, hit.point)
         return (fx, fy)
 
     def _steer(self, world: World, move: float, ux: float, uy: float, dt: float) -> Vec:
         """Air steering toward move·max_speed along up's tangent; it never brakes."""
         cfg = self.config
         tx, ty = uy, -ux
-        vx, vy = self.body.velocity
-        f = self.mass * (move * cfg.max_speed - (vx * tx + vy * ty)) / max(cfg.drive_time, dt)
+        vx, vy = self._vx, self._vy
+        f = self._m * (move * cfg.max_speed - (vx * tx + vy * ty)) / max(cfg.drive_time, dt)
         if f * move <= 0.0:
             return _ZERO
         f = max(-cfg.air_force, min(cfg.air_force, f))
@@ -789,17 +801,18 @@ class Controller:
 
     def _jump(self, world: World, ground: GroundHit | None, ux: float, uy: float) -> bool:
         cfg = self.config
-        vx, vy = self.body.velocity
+        vx, vy = self._vx, self._vy
         gvx, gvy = ground.frame_velocity if ground is not None else _ZERO
         dv = cfg.jump_speed - ((vx - gvx) * ux + (vy - gvy) * uy)
         self._jump_pressed_at = -math.inf
         self._grounded_at = -math.inf
         if dv <= 0.0:
             return False
-        m = self.mass
+        m = self._m
         jx, jy = m * dv * ux, m * dv * uy
         world.apply_impulse(self.body, (jx, jy), category=Category.SUPPORT)
-        if ground is not None:
+        if ground is not None and ground.body.body_type == pymunk.Body.DYNAMIC:
+            # The reaction, as _react's: a static or kinematic ground takes no impulse.
             world.apply_impulse(
                 ground.body, (-jx, -jy), point=ground.point, category=Category.SUPPORT
             )
@@ -987,6 +1000,16 @@ def hover_limit(damping_ratio: float) -> float:
     4.8284
     """
     return 2.0 * damping_ratio + 2.0 * math.sqrt(damping_ratio * damping_ratio + 1.0)
+
+
+def _react(world: World, ground: pymunk.Body, fx: float, fy: float, point: Vec) -> None:
+    """Newton's third law for hover and drive: −(fx, fy) (N) on the ground at ``point`` (m), a
+    SUPPORT force (it stands in for a contact). Only a dynamic ground takes it: the world drops
+    forces on static and kinematic bodies, so for those the call would only repeat the check of
+    a force of the magnitude ours has just passed (and of a hit point within the probe's reach).
+    """
+    if ground.body_type == pymunk.Body.DYNAMIC:
+        world.apply_force(ground, (-fx, -fy), point=point, category=Category.SUPPORT)
 
 
 def _unit_or(x: float, y: float, fallback: Vec) -> Vec:

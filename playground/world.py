@@ -68,6 +68,8 @@ Hook = Callable[["World"], None]
 
 _NEVER = 2**62
 """A step number no run reaches: the guard's next check when the guard is off."""
+_DEFAULT_RULE = GravityRule()
+"""The rule of a body that has none (frozen, so one instance serves every read)."""
 _F = batch.BodyFields
 _STATE = _F.BODY_ID | _F.POSITION | _F.ANGLE | _F.VELOCITY | _F.ANGULAR_VELOCITY
 """The guard's read: x, y, angle, vx, vy, w per body (batch packs fields in this order)."""
@@ -389,13 +391,13 @@ class World:
 
     def gravity_rule(self, name: str) -> GravityRule:
         """The body's rule (the default rule if it has none)."""
-        return self._rules.get(self.body(name).id, GravityRule())
+        return self._rules.get(self.body(name).id, _DEFAULT_RULE)
 
     def gravity_at(self, name: str) -> Vec:
         """The gravity this body feels now (field and rule), m/s²."""
         body = self.body(name)
         g = self._field.at(np.array([[body.position.x, body.position.y]]), self.time)
-        rule = self._rules.get(body.id, GravityRule())
+        rule = self._rules.get(body.id, _DEFAULT_RULE)
         d = np.array([rule.direction if rule.direction is not None else (np.nan, np.nan)])
         out = apply_rules(g, np.array([rule.scale]), d)[0]
         return (float(out[0]), float(out[1]))
