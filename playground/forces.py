@@ -82,15 +82,17 @@ class ForceLedger:
     __slots__ = ("_entries", "_on_first")
 
     def __init__(self, on_first: Callable[[], None] | None = None) -> None:
-        self._entries: dict[int, _Entry] = {}
+        # Keyed by the body object, not its id: ``body.id`` is a call into chipmunk (~0.5 µs)
+        # and a controller adds several forces a step; the ids are read once, in items().
+        self._entries: dict[pymunk.Body, _Entry] = {}
         self._on_first = on_first
 
     def _entry(self, body: pymunk.Body) -> _Entry:
-        entry = self._entries.get(body.id)
+        entry = self._entries.get(body)
         if entry is None:
             if not self._entries and self._on_first is not None:
                 self._on_first()
-            entry = self._entries[body.id] = _Entry(body)
+            entry = self._entries[body] = _Entry(body)
         return entry
 
     def add(
@@ -136,7 +138,7 @@ class ForceLedger:
 
     def items(self) -> list[tuple[int, list[float]]]:
         """(body id, per-category sums ``[px, py, ax, ay, sx, sy]``) of every body with forces."""
-        return [(body_id, e.parts) for body_id, e in self._entries.items()]
+        return [(body.id, e.parts) for body, e in self._entries.items()]
 
 
 @dataclass(frozen=True, slots=True)
