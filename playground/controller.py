@@ -20,6 +20,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, fields
 from enum import Enum
 
@@ -435,8 +436,8 @@ class Controller:
         v = body.velocity
         self._vx, self._vy = vx, vy = v.x, v.y
         self._m = float(body.mass)
-        self._gravity_actions(world, it)
         gx, gy = self._gravity(world)
+        self._gravity_actions(world, it)
 
         # Up: perceived while supported, the field while airborne (it sees where it will land),
         # fallen or getting up (contacts while lying and rising shake the inner ear).
@@ -701,6 +702,13 @@ class Controller:
         ax, ay = hit.frame_acceleration
         m = self._m
         weight = m * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
+        if weight == 0.0 and gx == 0.0 and gy == 0.0:
+            # Weightless (a nullified body) and not pressed on this ground by its frame either:
+            # nothing holds us on it, the legs push with nothing. Otherwise a weightless body
+            # whose held up swings toward whatever it bumps (its inner ear reads the bump as
+            # gravity) finds that body at its flank, a few tenths of a metre away, and the spring
+            # kicks off it at its budget.
+            return 0.0
         wc = world.config
         # hover_stiffness and hover_damping_coefficient, from the one mass read above.
         omega = self._omega
@@ -913,16 +921,27 @@ class Controller:
     # -- gravity switches ------------------------------------------------------------------------
 
     def _gravity_actions(self, world: World, it: Intent) -> None:
-        """Gravity switches act on a new intent value (a held intent acts once)."""
+        """Gravity switches act on a new intent value (a held intent acts once), from the next
+        step on: this step's gravity was applied before the controllers run, and every controller
+        (the nullified one included, whether it runs before or after us) must read the gravity
+        that acts in its step."""
+        name = self.name
         if it.restore_gravity:
-            if not world.gravity_rule(self.name).is_default:
-                world.set_gravity_rule(self.name, None)
+            if not world.gravity_rule(name).is_default:
+                _next_step(world, lambda w: w.set_gravity_rule(name, None))
         elif it.gravity is not None and it.gravity != self._gravity_wish:
-            world.set_gravity_rule(self.name, GravityRule(direction=it.gravity))
+            rule = GravityRule(direction=it.gravity)
+            _next_step(world, lambda w: w.set_gravity_rule(name, rule))
         self._gravity_wish = it.gravity
-        if it.nullify is not None and it.nullify != self._nullify_wish:
-            world.set_gravity_rule(it.nullify, GravityRule(scale=0.0))
+        target = it.nullify
+        if target is not None and target != self._nullify_wish:
+            _next_step(world, lambda w: w.set_gravity_rule(target, GravityRule(scale=0.0)))
         self._nullify_wish = it.nullify
+
+
+def _next_step(world: World, change: Callable[[World], None]) -> None:
+    """Run ``change`` in the EVENTS stage of the next step, before its gravity is applied."""
+    world.at(world.time + 0.5 * world.config.dt, change)
 
 
 def _stable_hover(config: ControllerConfig, dt: float) -> float:
