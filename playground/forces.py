@@ -312,9 +312,10 @@ class ForceSolver:
         self._pairs.clear()
         self._keys_dirty = False
 
-    def row_of(self, body: pymunk.Body) -> int | None:
-        """The tracked row of a body, or None."""
-        i = self._row_by_id.get(body.id)
+    def row_of(self, body: pymunk.Body, body_id: int | None = None) -> int | None:
+        """The tracked row of a body, or None. ``body_id``: its ``body.id`` if the caller has it
+        (reading it is a call into chipmunk)."""
+        i = self._row_by_id.get(body.id if body_id is None else body_id)
         return i if i is not None and self.bodies[i] is body else None
 
     # -- per step -------------------------------------------------------------------------------

@@ -213,6 +213,9 @@ class World:
         self.config = self._config
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._bodies: dict[str, pymunk.Body] = {}
+        # Each body's id by name: ``body.id`` is a call into chipmunk, and controllers look up
+        # their rule and tracked row by name every step.
+        self._ids: dict[str, int] = {}
         self._names: dict[int, str] = {}
         self._rules: dict[int, GravityRule] = {}
         self._movers: list[Mover] = []
@@ -391,7 +394,8 @@ class World:
 
     def gravity_rule(self, name: str) -> GravityRule:
         """The body's rule (the default rule if it has none)."""
-        return self._rules.get(self.body(name).id, _DEFAULT_RULE)
+        self.body(name)  # KeyError naming the known bodies
+        return self._rules.get(self._ids[name], _DEFAULT_RULE)
 
     def gravity_at(self, name: str) -> Vec:
         """The gravity this body feels now (field and rule), m/s²."""
@@ -418,6 +422,7 @@ class World:
         _check_body(name, body, shapes)
         self.space.add(body, *shapes)
         self._bodies[name] = body
+        self._ids[name] = body.id
         self._names[body.id] = name
         self._registry_dirty = True
         return body
@@ -425,6 +430,7 @@ class World:
     def remove(self, name: str) -> None:
         """Remove a body, its shapes and constraints, and stop tracking it."""
         body = self._bodies.pop(name)
+        del self._ids[name]
         del self._names[body.id]
         self._rules.pop(body.id, None)
         self._update_gravity_stage()
@@ -666,7 +672,7 @@ class World:
         return (float(u[0]), float(u[1]))
 
     def _tracked_row(self, name: str) -> int:
-        row = self._solver.row_of(self.body(name))
+        row = self._solver.row_of(self.body(name), self._ids[name])
         if row is None:
             raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
         return row
