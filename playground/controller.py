@@ -192,7 +192,6 @@ class GroundHit:
         point: the hit point on its surface, m.
         normal: the surface normal there (unit, pointing out of the ground).
         distance: from the hit point to the capsule's centre along up, m.
-        ground_velocity: velocity of the ground at the hit point, m/s.
         walkable: the normal is within ``max_slope`` of up.
         frame_velocity: velocity that keeps the capsule's centre fixed to the ground over the
             coming step, m/s: the ground's velocity plus the chord (R(ω·dt) − 1)·d/dt its turn
@@ -216,7 +215,6 @@ class GroundHit:
     point: Vec
     normal: Vec
     distance: float
-    ground_velocity: Vec
     walkable: bool
     frame_velocity: Vec
     frame_acceleration: Vec
@@ -550,7 +548,6 @@ class Controller:
         ground = info.shape.body
         hx, hy = info.point
         nx, ny = info.normal
-        gv = ground.velocity_at_world_point((hx, hy))
         # The ground's frame at our centre, as pymunk's step needs it: positions move with the
         # velocity before the step, so standing still on a ground turning by θ = ω·dt this step
         # takes the velocity that carries our centre to where the ground carries that point,
@@ -571,7 +568,6 @@ class Controller:
             point=(hx, hy),
             normal=(nx, ny),
             distance=(px - hx) * ux + (py - hy) * uy,
-            ground_velocity=(gv.x, gv.y),
             walkable=nx * ux + ny * uy >= self._cos_slope,
             frame_velocity=(v.x + rx, v.y + ry),
             frame_acceleration=(

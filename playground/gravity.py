@@ -13,7 +13,6 @@ vectorised force write per step. Per-body rules (scale, own direction) live in :
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
@@ -296,11 +295,3 @@ def apply_rules(field_g: Points, scale: NDArray[np.float64], direction: Points) 
         mag = np.hypot(field_g[own, 0], field_g[own, 1]) * scale[own]
         g[own] = direction[own] * mag[:, None]
     return g
-
-
-def as_field(value: GravityField | Sequence[float]) -> GravityField:
-    """Accept a field or a plain (gx, gy) vector in m/s²."""
-    if isinstance(value, GravityField):
-        return value
-    gx, gy = value
-    return Uniform((float(gx), float(gy)))
