@@ -347,9 +347,11 @@ class Controller:
         self._m = config.mass
 
         self.removed = False
+        self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self._control)]
         if source is not None:
-            world.on(Stage.INPUTS, self._read_source)
-        world.on(Stage.CONTROL, self._control)
+            self._hooks.insert(0, (Stage.INPUTS, self._read_source))
+        for stage, hook in self._hooks:
+            world.on(stage, hook)
 
     def tune_hover(self, frequency: float, damping: float) -> None:
         """Set the hover spring's frequency (Hz) and damping ratio from the next step on (a live
@@ -361,12 +363,13 @@ class Controller:
         self._omega = omega
 
     def remove(self) -> None:
-        """Take the controller out of its world: its grip, body and shape go; its hooks stay
-        registered (the world has no way to drop one) but do nothing from now on."""
+        """Take the controller out of its world: its grip, body, shape and hooks go."""
         if self.removed:
             return
         self._release(self.world)
         self.world.remove(self.name)
+        for stage, hook in self._hooks:
+            self.world.off(stage, hook)
         self.removed = True
 
     # -- reading ---------------------------------------------------------------------------------

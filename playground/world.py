@@ -89,6 +89,15 @@ class Stage(Enum):
     OBSERVE = 9
 
 
+_HOOK_LISTS = {
+    Stage.INPUTS: "_inputs",
+    Stage.EVENTS: "_event_hooks",
+    Stage.CONTROL: "_controls",
+    Stage.OBSERVE: "_observers",
+}
+"""The World attribute holding each stage's hooks."""
+
+
 @dataclass(frozen=True, slots=True)
 class WorldConfig:
     """Simulation settings, frozen.
@@ -686,13 +695,31 @@ class World:
         self._hook_list(stage).append(hook)
         self._plan_dirty = True
 
+    def off(self, stage: Stage, hook: Hook) -> None:
+        """Stop running ``hook`` in ``stage``: the opposite of :meth:`on`. Safe from inside a
+        step: the stage that is running finishes with the hooks it started with.
+
+        >>> world = World()
+        >>> def count(w: World) -> None: ...
+        >>> world.on(Stage.OBSERVE, count)
+        >>> world.off(Stage.OBSERVE, count)
+        >>> world.off(Stage.OBSERVE, count)
+        Traceback (most recent call last):
+        ...
+        ValueError: hook: count is not registered in OBSERVE
+        """
+        hooks = self._hook_list(stage)
+        if hook not in hooks:
+            name = getattr(hook, "__name__", repr(hook))
+            raise ValueError(f"hook: {name} is not registered in {stage.name}")
+        kept = list(hooks)  # a new list: a step iterating the old one is not disturbed
+        kept.remove(hook)
+        setattr(self, _HOOK_LISTS[stage], kept)
+        self._plan_dirty = True
+
     def _hook_list(self, stage: Stage) -> list[Hook]:
-        return {
-            Stage.INPUTS: self._inputs,
-            Stage.EVENTS: self._event_hooks,
-            Stage.CONTROL: self._controls,
-            Stage.OBSERVE: self._observers,
-        }[stage]
+        hooks: list[Hook] = getattr(self, _HOOK_LISTS[stage])
+        return hooks
 
     def at(self, t: float, event: Hook) -> None:
         """Run ``event(world)`` once, in the EVENTS stage of the first step starting at or after

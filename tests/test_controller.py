@@ -284,6 +284,18 @@ def test_a_removed_controller_leaves_the_world() -> None:
     assert player.removed
 
 
+def test_a_removed_controller_takes_its_hooks_with_it() -> None:
+    """remove() also unregisters the controller's input and control hooks (World.off): nothing
+    of it runs any more, so a world left with no effect steps bare again."""
+    world = flat_world()
+    player = Controller(world, "player", (0.0, 1.0), source=Script(((0.0, Intent(move=1.0)),)))
+    world.run(0.1)
+    player.remove()
+    for stage, hook in ((Stage.INPUTS, player._read_source), (Stage.CONTROL, player._control)):
+        with pytest.raises(ValueError, match="not registered"):
+            world.off(stage, hook)
+
+
 TOL_RING_REL = 1e-4
 """Relative, support against m·ω²·r inside the spinning ring: the step turns the frame by
 θ = ω·dt, so the discrete orbit needs m·ω²·r·(sin(θ/2)/(θ/2))², short by θ²/12 ≈ 1.3e-5."""

@@ -124,6 +124,28 @@ def test_names_and_remove() -> None:
     assert abs(f.support[1] - 1.0 * G) <= TOL_SETTLED_REL * G
 
 
+def test_off_stops_a_hook_even_from_inside_the_step() -> None:
+    """World.off is the opposite of World.on. A hook that takes another one off during a step
+    does not disturb the stage that is running: both ran this step, only the first runs after."""
+    world = World()
+    calls: list[str] = []
+
+    def second(w: World) -> None:
+        calls.append("second")
+
+    def first(w: World) -> None:
+        calls.append("first")
+        if w.steps == 1:
+            w.off(Stage.OBSERVE, second)
+
+    world.on(Stage.OBSERVE, first)
+    world.on(Stage.OBSERVE, second)
+    world.run(3 * world.config.dt)
+    assert calls == ["first", "second", "first", "first"]
+    with pytest.raises(ValueError, match="second is not registered in OBSERVE"):
+        world.off(Stage.OBSERVE, second)
+
+
 def test_set_mass_is_followed_by_the_solver() -> None:
     """Law: after a mass change the support settles to the new m·g (the solver uses the new m)."""
     world = resting_world(mass=3.0)
