@@ -529,10 +529,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(f"{who}: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
-    except LevelError as exc:
-        print(f"{who}: {exc}", file=sys.stderr)
-        return EXIT_USAGE
-    except UsageError as exc:
+    except (LevelError, UsageError) as exc:
         print(f"{who}: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except ModuleNotFoundError as exc:

@@ -51,6 +51,7 @@ from pydantic import (
 from playground import limits
 
 __all__ = [
+    "SEED_SEQUENCES",
     "Level",
     "LevelError",
     "Problem",
@@ -1404,6 +1405,19 @@ def _packaged() -> dict[str, Path]:
         copy.write_bytes(t.read_bytes())
         found[copy.stem] = copy
     return found
+
+
+SEED_SEQUENCES = (
+    "moving_platform",
+    "seesaw",
+    "flying_whale",
+    "crusher",
+    "gravity_flip",
+    "null_enemy",
+    "gravity_leap",
+)
+"""The shipped levels of the seven sequences the playground exists for (docs/design.md §1), in
+that order: each must catch at least two breaks, and each has a GIF in the README."""
 
 
 def shipped() -> dict[str, Path]:

@@ -11,18 +11,8 @@ import pytest
 
 from playground import controller, faults, movers, perception, world
 from playground.cli import main
-from playground.level import LevelError, find, load, loads, shipped
+from playground.level import SEED_SEQUENCES, LevelError, find, load, loads, shipped
 
-SEED_SEQUENCES = (
-    "moving_platform",
-    "seesaw",
-    "flying_whale",
-    "crusher",
-    "gravity_flip",
-    "null_enemy",
-    "gravity_leap",
-)
-"""The seven sequences the playground exists for: each must catch at least two breaks."""
 ROOMS = ("spinning_ring", "rotating_room", "planet")
 """The artificial-gravity levels: they too must catch at least two breaks."""
 MIN_CATCHES = 2

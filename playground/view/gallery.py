@@ -11,21 +11,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
+from playground.level import SEED_SEQUENCES
 from playground.view.app import HEADLESS_FRAME, App
 from playground.view.capture import GifWriter
 from playground.view.launcher import init_headless, show_level
 
 __all__ = ["FPS", "SEQUENCES", "SIZE", "make_gif", "make_gifs"]
 
-SEQUENCES = (
-    "moving_platform",
-    "seesaw",
-    "flying_whale",
-    "crusher",
-    "gravity_flip",
-    "null_enemy",
-    "gravity_leap",
-)
+SEQUENCES = SEED_SEQUENCES
 """The seven seed sequences, in the order the README tells them."""
 
 SIZE = (640, 360)  # px: half the default window, small enough for a README
