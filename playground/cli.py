@@ -244,13 +244,11 @@ def _progress_bar(scene: Any, seconds: float, *, enabled: bool) -> None:
 
 def _replay(file: str, name: str, scene: Any) -> float | None:
     """Let a replay drive the scene's player; the seconds it covers (None after an error)."""
-    # Without pygame-ce this raises ModuleNotFoundError: main() names the extra to install.
-    from playground.view.launcher import attach_replay, show_scene
-    from playground.view.replay import Replay, ReplayError
+    from playground.replay import Playback, Replay, ReplayError
 
     try:
         replay = Replay.load(file)
-        attach_replay(show_scene(name, scene), replay)
+        Playback(replay, name, scene)
     except (ReplayError, ValueError) as exc:
         print(f"playground run: {exc}", file=sys.stderr)
         return None

@@ -154,7 +154,7 @@ def test_ctrl_c_during_play_exits_130_and_keeps_the_replay(tmp_path: Path) -> No
     """Ctrl-C during ``play`` (headless, many frames): "interrupted", exit 130, and the replay
     of the steps played so far is written."""
     pytest.importorskip("pygame")
-    from playground.view.replay import Replay
+    from playground.replay import Replay
 
     out = tmp_path / "session.json"
     code, err = _interrupt(

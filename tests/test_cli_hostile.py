@@ -1,5 +1,5 @@
 """Hostile command lines: bounded run lengths, strict JSON, a level whose actor an event removes,
-a levels folder that contains itself, and replay lookups that do not rebuild anything per step."""
+and a levels folder that contains itself."""
 
 from __future__ import annotations
 
@@ -12,7 +12,6 @@ from pathlib import Path
 import pytest
 
 from playground.cli import main
-from playground.intents import Intent
 from playground.limits import MAX_SECONDS, MAX_TIME
 
 REGRESSIONS = Path(__file__).parent / "regressions"
@@ -92,19 +91,3 @@ def test_a_levels_folder_that_contains_itself_is_listed(tmp_path: Path) -> None:
     )
     assert done.returncode == 0, done.stderr[-2000:]
     assert "mine" in done.stdout and "Mine" in done.stdout
-
-
-def test_replay_lookup_matches_a_linear_scan() -> None:
-    """Law: the replay's bisection over its precomputed change steps finds the intent a linear
-    scan finds, at every step of a long replay with a change every other step."""
-    pytest.importorskip("pygame")
-    from playground.view.replay import Replay
-
-    changes = tuple((2 * k + 1, Intent(move=(-1.0) ** k)) for k in range(2000))
-    replay = Replay(level="rest", dt=1 / 120, steps=4010, changes=changes)
-    for step in range(0, 4010, 7):
-        expected = Intent()
-        for s, intent in changes:
-            if s <= step:
-                expected = intent
-        assert replay.intent_at(step) == expected

@@ -27,16 +27,15 @@ from typing import Any
 import pygame
 import pymunk
 
-from playground.forces import Category
 from playground.intents import Intent, IntentSource
+from playground.mouse import Grab, MouseSpring
+from playground.replay import Recorder, Replay
 from playground.view.arrows import G0, MIN_ARROW_PX, arrow_length, body_size, weight_pixels
 from playground.view.camera import Camera
 from playground.view.capture import save_picture
 from playground.view.draw import COLOURS, draw_arrow, draw_grid
 from playground.view.hud import Hud, HudInfo, StageCosts
-from playground.view.mouse import Grab, MouseSpring
 from playground.view.overlay import OVERLAY_KEYS, Overlay, Painter, nearest, roles_of
-from playground.view.replay import Recorder, Replay
 from playground.view.scope import Scope
 from playground.view.tuning import Knobs, TuningPanel
 from playground.world import Stage, World
@@ -290,22 +289,12 @@ class Session:
 
     def pull_hook(self, world: World) -> None:
         """CONTROL stage: the mouse spring's force on the grabbed body, into the ledger as an
-        APPLIED force at the grabbed point (see :mod:`playground.view.mouse`)."""
+        APPLIED force at the grabbed point (see :mod:`playground.mouse`)."""
         grab = self.playback.grab_at(world.steps) if self.playback is not None else self.grab
         if self.recorder is not None:
             self.recorder.record_grab(world.steps, grab)
-        if grab is None or grab.body not in world.names:
-            self.pull = None
-            return
-        body = world.body(grab.body)
-        if body.body_type != pymunk.Body.DYNAMIC:
-            self.pull = None
-            return
-        pull = self.spring.pull(body, grab.anchor, grab.target, world.config.dt)
-        world.apply_force(body, pull.force, point=pull.point, category=Category.APPLIED)
-        if pull.torque != 0.0:
-            world.apply_torque(body, pull.torque, category=Category.APPLIED)
-        self.pull = (pull.force, pull.point)
+        pull = self.spring.apply(world, grab)
+        self.pull = None if pull is None else (pull.force, pull.point)
 
     def intent(self, t: float) -> Intent:
         """The player's intent source (replaces a level's script): this step's intent."""

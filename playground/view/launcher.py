@@ -13,9 +13,9 @@ from typing import Any
 
 import pygame
 
+from playground.replay import Replay, ReplayError
 from playground.view.app import HEADLESS_FRAME, App, Session, Show, display_available
 from playground.view.capture import GIF_FPS, GifWriter, gif_path, parse_size, picture_path
-from playground.view.replay import Replay, ReplayError
 
 __all__ = [
     "DEFAULT_LEVEL",
@@ -80,15 +80,7 @@ def show_level(level: str) -> Show:
 
 def attach_replay(show: Show, replay: Replay) -> Session:
     """Make ``replay`` drive the player of ``show`` from its first step (checks level and dt)."""
-    if replay.level != show.name:
-        raise ReplayError(f"the replay is of level {replay.level!r}, not {show.name!r}")
-    dt = show.world.config.dt
-    if replay.dt != dt:
-        raise ReplayError(f"the replay was recorded at dt = {replay.dt!r} s, the level has {dt!r}")
-    if show.world.steps != 0:
-        raise ReplayError(
-            f"{show.name}: a replay starts at step 0, the world is at step {show.world.steps}"
-        )
+    replay.check(show.name, show.world)
     return Session(show, replay)
 
 

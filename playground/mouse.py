@@ -20,8 +20,6 @@ Off the centre of mass the grabbed point is lighter, ``1/m_eff = 1/m + |r|²/I``
 spring there is faster by √(m/m_eff): ω is lowered so that even that stays below ``step_limit``.
 
 >>> import pymunk
-
-from playground.controller import hover_spring
 >>> body = pymunk.Body(2.0, float("inf"))
 >>> spring = MouseSpring(frequency=1.0, damping_ratio=0.0, max_weights=100.0)
 >>> pull = spring.pull(body, (0.0, 0.0), (1.0, 0.0), dt=0.01)
@@ -33,10 +31,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import pymunk
 
 from playground.controller import hover_spring
+from playground.forces import Category
+
+if TYPE_CHECKING:
+    from playground.world import World
 
 __all__ = ["G0", "Grab", "MouseSpring", "Pull"]
 
@@ -113,6 +116,20 @@ class MouseSpring:
             rate = min(self.spin_damping, self.spin_limit / (dt * about))
             torque = -rate * about * body.moment * w
         return Pull((fx, fy), (p.x, p.y), torque)
+
+    def apply(self, world: World, grab: Grab | None) -> Pull | None:
+        """This step's pull on what ``grab`` holds, put into ``world``'s ledger as APPLIED force
+        (at the grabbed point) and torque; None when nothing dynamic is held (a CONTROL hook)."""
+        if grab is None or grab.body not in world.names:
+            return None
+        body = world.body(grab.body)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            return None
+        pull = self.pull(body, grab.anchor, grab.target, world.config.dt)
+        world.apply_force(body, pull.force, point=pull.point, category=Category.APPLIED)
+        if pull.torque != 0.0:
+            world.apply_torque(body, pull.torque, category=Category.APPLIED)
+        return pull
 
     def omega(self, body: pymunk.Body, anchor: Vec, dt: float) -> float:
         """The spring's angular frequency (rad/s) on ``body`` grabbed at ``anchor`` (body frame,

@@ -6,6 +6,9 @@ Steps, not times, are the key, so playing it back feeds exactly the same intent 
 same step: same level + same replay ⇒ bit-identical trajectory. Python's JSON writes floats with
 ``repr``, which reads back to the same double.
 
+Replays are core, not view: :class:`Playback` drives a built scene headless (``playground run
+LEVEL --replay FILE``) without pygame-ce installed; the view records them and plays them back.
+
 >>> from playground.intents import Intent
 >>> rec = Recorder(level="sandbox", dt=0.01)
 >>> for step, move in enumerate([0.0, 1.0, 1.0, -1.0]):
@@ -27,12 +30,26 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+import tomli_w
 
 from playground.intents import Intent
-from playground.view.mouse import Grab
+from playground.mouse import Grab, MouseSpring
+from playground.world import Stage, World
 
-__all__ = ["FORMAT", "Recorder", "Replay", "ReplayError", "intent_from_dict", "intent_to_dict"]
+if TYPE_CHECKING:
+    from playground.scene import Scene
+
+__all__ = [
+    "FORMAT",
+    "Playback",
+    "Recorder",
+    "Replay",
+    "ReplayError",
+    "intent_from_dict",
+    "intent_to_dict",
+]
 
 FORMAT = "playground-replay"
 VERSION = 1
@@ -183,16 +200,32 @@ class Replay:
         t = 1.0
         actor = "player"
         move = -1.0
-        gravity = [0.0, 1.0]
+        gravity = [
+            0.0,
+            1.0,
+        ]
         <BLANKLINE>
         """
-        out: list[str] = []
-        for step, intent in self.changes:
-            out += ["[[inputs]]", f"t = {step * self.dt!r}", f"actor = {json.dumps(self.actor)}"]
-            for key, value in intent_to_dict(intent).items():
-                out.append(f"{key} = {_toml(value)}")
-            out.append("")
-        return "\n".join(out)
+        tables = [
+            {"t": step * self.dt, "actor": self.actor, **intent_to_dict(intent)}
+            for step, intent in self.changes
+        ]
+        return tomli_w.dumps({"inputs": tables})
+
+    def check(self, name: str, world: World) -> None:
+        """ReplayError unless this replay can drive level ``name`` in ``world``: the same level,
+        the same dt, and a world still at step 0."""
+        if self.level != name:
+            raise ReplayError(f"the replay is of level {self.level!r}, not {name!r}")
+        dt = world.config.dt
+        if self.dt != dt:
+            raise ReplayError(
+                f"the replay was recorded at dt = {self.dt!r} s, the level has {dt!r}"
+            )
+        if world.steps != 0:
+            raise ReplayError(
+                f"{name}: a replay starts at step 0, the world is at step {world.steps}"
+            )
 
     def save(self, path: str | Path) -> None:
         Path(path).write_text(self.to_json() + "\n", encoding="utf-8")
@@ -205,17 +238,6 @@ class Replay:
         except OSError as exc:
             raise ReplayError(f"{p}: cannot read the replay ({exc.strerror})") from None
         return cls.from_json(text, where=str(p))
-
-
-def _toml(value: Any) -> str:
-    """A TOML literal for an intent field value (bool, number, string or a list of numbers)."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float | int):
-        return repr(float(value))
-    if isinstance(value, list):
-        return "[" + ", ".join(_toml(v) for v in value) + "]"
-    return json.dumps(str(value))
 
 
 def _grab_to_dict(grab: Grab | None) -> dict[str, Any] | None:
@@ -294,3 +316,40 @@ class Recorder:
             actor=self.actor,
             grabs=tuple(self._grabs),
         )
+
+
+class Playback:
+    """A replay driving a built scene headless: its actor's intent in the INPUTS stage of every
+    step (after the actor's own script, which it overrides) and what the mouse held in the
+    CONTROL stage (pulled by a :class:`~playground.mouse.MouseSpring`, as the view pulls).
+
+    >>> from playground.level import find, load
+    >>> from playground.scene import build
+    >>> scene = build(load(find("rest")))
+    >>> replay = Replay("rest", scene.world.config.dt, 3, ((1, Intent(move=1.0)),))
+    >>> playback = Playback(replay, "rest", scene)
+    >>> scene.world.step(); scene.world.step()
+    >>> scene.controllers["player"].intent.move
+    1.0
+    """
+
+    def __init__(self, replay: Replay, name: str, scene: Scene) -> None:
+        replay.check(name, scene.world)
+        controller = scene.controllers.get(replay.actor)
+        if controller is None:
+            raise ReplayError(f"{name}: the replay drives {replay.actor!r}, not a controller")
+        self.replay = replay
+        self.controller = controller
+        self.spring = MouseSpring()
+        scene.world.on(Stage.INPUTS, self.input_hook)
+        if replay.grabs:
+            scene.world.on(Stage.CONTROL, self.pull_hook)
+
+    def input_hook(self, world: World) -> None:
+        """INPUTS stage: the actor holds the replay's intent for this step."""
+        if self.replay.actor in world.names:
+            self.controller.intent = self.replay.intent_at(world.steps)
+
+    def pull_hook(self, world: World) -> None:
+        """CONTROL stage: the mouse spring's pull on what the replay held at this step."""
+        self.spring.apply(world, self.replay.grab_at(world.steps))

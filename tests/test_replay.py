@@ -1,0 +1,206 @@
+"""Laws of replays (:mod:`playground.replay`), core and headless: a replay drives a level without
+pygame-ce, bit for bit as with it; its intents written as a level's ``[[inputs]]`` give the same
+run; bad replay files say which entry is wrong; lookups are exact."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+import tomli_w
+
+from playground.intents import Intent
+from playground.level import find, load, loads
+from playground.mouse import Grab
+from playground.replay import Playback, Replay, ReplayError
+from playground.scene import Scene, build
+
+NO_PYGAME = (
+    "import sys; sys.modules['pygame'] = None; "
+    "from playground.cli import main; sys.exit(main(sys.argv[1:]))"
+)
+"""A ``python -c`` program: the command line with pygame made unimportable (``import pygame``
+raises ModuleNotFoundError, as where pygame-ce is not installed)."""
+
+
+def sandbox_replay() -> Replay:
+    """Half a second of the sandbox: walk right, jump, walk back, while the mouse lifts the
+    crate."""
+    dt = load(find("sandbox")).settings.dt
+    changes = (
+        (0, Intent(move=1.0)),
+        (20, Intent(move=1.0, jump=True)),
+        (24, Intent(move=-0.5)),
+        (50, Intent()),
+    )
+    grabs = ((10, Grab("crate", (0.0, 0.0), (2.5, 1.5))), (45, None))
+    return Replay(level="sandbox", dt=dt, steps=60, changes=changes, grabs=grabs)
+
+
+def played(replay: Replay) -> Scene:
+    scene = build(load(find(replay.level)))
+    Playback(replay, replay.level, scene)
+    for _ in range(replay.steps):
+        scene.world.step()
+    return scene
+
+
+def state(scene: Scene) -> list[float]:
+    w = scene.world
+    out: list[float] = [w.time, float(w.steps)]
+    for n in w.names:
+        b = w.body(n)
+        out += [*b.position, *b.velocity, b.angle, b.angular_velocity]
+    return out
+
+
+def run_json(args: list[str], *, pygame: bool) -> dict[str, object]:
+    env = {**os.environ, "SDL_VIDEODRIVER": "dummy"}
+    prefix = ["-m", "playground"] if pygame else ["-c", NO_PYGAME]
+    done = subprocess.run(
+        [sys.executable, *prefix, *args], capture_output=True, text=True, env=env, check=False
+    )
+    assert done.returncode in (0, 1), done.stderr[-2000:]
+    report: dict[str, object] = json.loads(done.stdout)
+    report.pop("wall_seconds")
+    return report
+
+
+def test_run_replay_needs_no_pygame(tmp_path: Path) -> None:
+    """Law: ``playground run LEVEL --replay FILE`` completes where pygame cannot be imported, and
+    reports exactly what the same command reports with pygame present; the replay did drive the
+    run (a run without it ends elsewhere)."""
+    path = tmp_path / "sandbox.json"
+    sandbox_replay().save(path)
+    args = ["run", "sandbox", "--replay", str(path), "--json", "--no-progress"]
+    without = run_json(args, pygame=False)
+    assert without == run_json(args, pygame=True)
+    assert without["steps"] == 60
+    plain = run_json(["run", "sandbox", "--seconds", "0.5", "--json"], pygame=False)
+    bodies = without["bodies"]
+    assert isinstance(bodies, dict) and isinstance(plain["bodies"], dict)
+    assert bodies["player"]["position"] != plain["bodies"]["player"]["position"]
+    assert bodies["crate"]["position"] != plain["bodies"]["crate"]["position"]
+
+
+def test_the_no_pygame_program_really_hides_pygame() -> None:
+    """The shim above does what it claims: ``import pygame`` fails under it."""
+    code = NO_PYGAME.replace("from playground.cli import main; sys.exit(main(sys.argv[1:]))", "")
+    done = subprocess.run(
+        [sys.executable, "-c", code + "import pygame"], capture_output=True, text=True, check=False
+    )
+    assert done.returncode != 0 and "ModuleNotFoundError" in done.stderr
+
+
+def test_playback_lifts_what_the_mouse_held() -> None:
+    """Law: a replay's grabs are pulled as the view pulls them: the crate held above the floor
+    from step 10 to 45 is lifted."""
+    replay = sandbox_replay()
+    lifted = played(replay).world.body("crate").position.y
+    dropped = played(Replay(replay.level, replay.dt, 30, replay.changes)).world.body("crate")
+    assert lifted > dropped.position.y + 0.2
+
+
+def test_replay_as_level_inputs_gives_the_same_run() -> None:
+    """Law: a replay's intents written as ``[[inputs]]`` (TOML, by :meth:`Replay.to_inputs`) and
+    appended to its level give a scripted run that ends exactly where the replay's run ends."""
+    replay = sandbox_replay()
+    replay = Replay(replay.level, replay.dt, replay.steps, replay.changes)
+    doc = tomllib.loads(find(replay.level).read_text(encoding="utf-8"))
+    # The sandbox's own script drives the player: the replay's inputs replace it.
+    doc["inputs"] = tomllib.loads(replay.to_inputs())["inputs"]
+    scripted = build(loads(tomli_w.dumps(doc), "sandbox+replay"))
+    for _ in range(replay.steps):
+        scripted.world.step()
+    assert state(scripted) == state(played(replay))
+
+
+COMMITTED = Path(__file__).parents[1] / "docs" / "img" / "sandbox-replay.json"
+"""A replay recorded by ``playground play`` before replays moved out of the view."""
+
+
+def test_a_replay_written_before_the_move_still_plays() -> None:
+    """The committed replay loads and drives its level: the player walks left for 500 steps."""
+    replay = Replay.load(COMMITTED)
+    start = load(find(replay.level)).actors[0].position[0]
+    scene = played(replay)
+    assert scene.world.steps == 500
+    assert scene.world.body("player").position.x < start - 1.0
+
+
+def test_a_replay_of_another_level_or_dt_is_refused() -> None:
+    replay = sandbox_replay()
+    scene = build(load(find("rest")))
+    with pytest.raises(ReplayError, match="of level 'sandbox', not 'rest'"):
+        Playback(replay, "rest", scene)
+    other = Replay("rest", replay.dt / 2, 3, ())
+    with pytest.raises(ReplayError, match="dt"):
+        Playback(other, "rest", scene)
+    nobody = Replay("rest", scene.world.config.dt, 3, (), actor="crate")
+    with pytest.raises(ReplayError, match="'crate', not a controller"):
+        Playback(nobody, "rest", scene)
+
+
+def test_replay_lookup_matches_a_linear_scan() -> None:
+    """Law: the replay's bisection over its precomputed change steps finds the intent a linear
+    scan finds, at every step of a long replay with a change every other step."""
+    changes = tuple((2 * k + 1, Intent(move=(-1.0) ** k)) for k in range(2000))
+    replay = Replay(level="rest", dt=1 / 120, steps=4010, changes=changes)
+    for step in range(0, 4010, 7):
+        expected = Intent()
+        for s, intent in changes:
+            if s <= step:
+                expected = intent
+        assert replay.intent_at(step) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("[]", "format"),
+        ('{"format": "playground-replay", "version": 9}', "version"),
+        (
+            '{"format": "playground-replay", "version": 1, "level": "x", "dt": 0.01, "steps": 3,'
+            ' "changes": [[0, {"mvoe": 1.0}]]}',
+            "mvoe",
+        ),
+        (
+            '{"format": "playground-replay", "version": 1, "level": "x", "dt": 0.01, "steps": 3,'
+            ' "changes": [[2, {}], [1, {}]]}',
+            "increase",
+        ),
+        (
+            '{"format": "playground-replay", "version": 1, "level": "x", "dt": 0.01, "steps": 3,'
+            ' "changes": [[0, {"move": 3.0}]]}',
+            "move",
+        ),
+    ],
+)
+def test_bad_replays_say_what_is_wrong(text: str, expected: str) -> None:
+    with pytest.raises(ReplayError, match=expected):
+        Replay.from_json(text, where="bad.json")
+
+
+@pytest.mark.parametrize(
+    ("grabs", "expected"),
+    [
+        ('[[0, {"body": "crate"}]]', "grabs[0]: expected"),
+        ('[[0, {"body": "crate", "anchor": [0, 0], "target": [1, "x"]}]]', "grabs[0]"),
+        ("[[5, null], [5, null]]", "steps must increase"),
+        ('{"0": null}', "grabs: expected a list"),
+    ],
+)
+def test_bad_grabs_in_a_replay_say_what_is_wrong(grabs: str, expected: str) -> None:
+    """Law: a malformed ``grabs`` list is a ReplayError naming the entry and the shape wanted."""
+    text = (
+        '{"format": "playground-replay", "version": 1, "level": "sandbox", "dt": 0.01, '
+        f'"steps": 10, "actor": "player", "changes": [], "grabs": {grabs}}}'
+    )
+    with pytest.raises(ReplayError, match=re.escape(expected)):
+        Replay.from_json(text)
