@@ -19,7 +19,9 @@ from playground.gravity import (
 from playground.intents import Idle, Intent, IntentSource, Patrol, Script
 from playground.movers import Circle, Elevator, Mover, Sine, Spin, Waypoints, ring_room
 from playground.perception import PerceivedGravity, Perception
-from playground.world import Stage, StageTiming, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage, StageTiming
+from playground.world.world import World
 
 __version__ = "0.1.0"
 """The release (also the distribution's version: pyproject.toml reads it from here)."""

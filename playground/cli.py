@@ -223,7 +223,7 @@ no progress bar."""
 
 def _progress_bar(scene: Any, seconds: float, *, enabled: bool) -> None:
     """A progress bar (simulated seconds) on stderr for a long run, when stderr is a terminal."""
-    from playground.world import Stage
+    from playground.world.schedule import Stage
 
     steps = round(seconds / scene.world.config.dt)
     if not enabled or steps < PROGRESS_MIN_STEPS or not sys.stderr.isatty():

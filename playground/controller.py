@@ -30,7 +30,8 @@ from playground._validate import finite, positive
 from playground.forces import Category
 from playground.gravity import GravityRule
 from playground.intents import IDLE, Intent, IntentSource
-from playground.world import Stage, World
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = [
     "Controller",

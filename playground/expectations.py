@@ -24,7 +24,8 @@ import numpy as np
 from playground.filters import FilterChain, Median3, OneEuroFilter
 from playground.level import CONTROLLER_QUANTITIES, Expectation, Level, Reading
 from playground.scene import Scene
-from playground.world import Stage, World
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = ["UNITS", "Check", "CheckResult", "Checks", "check_names", "read", "watch"]
 

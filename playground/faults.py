@@ -31,10 +31,11 @@ from typing import Any
 from playground import controller as controller_mod
 from playground import movers as movers_mod
 from playground import perception as perception_mod
-from playground import world as world_mod
 from playground.forces import Category
 from playground.gravity import GravityRule
 from playground.level import Level
+from playground.world import force_api, gravity_stage
+from playground.world import world as world_mod
 
 __all__ = [
     "BREAKS",
@@ -371,8 +372,8 @@ def _perceived_gravity_rotated() -> Iterator[None]:
         return lambda self, name: _rotate(original(self, name), PERCEIVED_ROTATION)
 
     with (
-        _replaced(world_mod.World, "perceived_gravity", turned),
-        _replaced(world_mod.World, "perceived_up", turned),
+        _replaced(force_api.ForceAPI, "perceived_gravity", turned),
+        _replaced(force_api.ForceAPI, "perceived_up", turned),
     ):
         yield
 
@@ -414,17 +415,17 @@ def _gravity_rule_ignored() -> Iterator[None]:
     falls in the field, while the world still reports each body's rule (so its controller
     believes it)."""
 
-    def make(original: Callable[[Any], None]) -> Callable[[Any], None]:
-        def apply_gravity(self: Any) -> None:
+    def make(original: Callable[..., Any]) -> Callable[..., Any]:
+        def apply_gravity(self: Any, t: float) -> Any:
             rules, self._rules = self._rules, {}
             try:
-                original(self)
+                return original(self, t)
             finally:
                 self._rules = rules
 
         return apply_gravity
 
-    with _replaced(world_mod.World, "_apply_gravity", make):
+    with _replaced(gravity_stage.GravityStage, "apply", make):
         yield
 
 

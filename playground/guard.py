@@ -16,6 +16,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pymunk
+import pymunk.batch as batch
 from numpy.typing import NDArray
 
 from playground.limits import RUNAWAY_FORCE, RUNAWAY_POSITION, RUNAWAY_SPEED
@@ -26,8 +28,10 @@ __all__ = [
     "GUARD_EVERY",
     "STATE_BOUNDS",
     "STATE_COLUMNS",
+    "Runaway",
     "RunawayError",
     "first_bad",
+    "state_runaway",
 ]
 
 GUARD_EVERY = 256
@@ -64,6 +68,13 @@ FORCE_COLUMNS = (("engine force", "x", "N"), ("engine force", "y", "N"))
 """The force readings checked every step."""
 
 FORCE_BOUNDS = np.array([RUNAWAY_FORCE, RUNAWAY_FORCE])
+
+Runaway = tuple[int, tuple[str, str, str], float, float]
+"""A value out of bounds: the body's id, its column (quantity, component, unit), value, bound."""
+
+_F = batch.BodyFields
+_STATE = _F.BODY_ID | _F.POSITION | _F.ANGLE | _F.VELOCITY | _F.ANGULAR_VELOCITY
+"""The state read: x, y, angle, vx, vy, w per body (batch packs fields in this order)."""
 
 _CAUSES = {
     "position": "the solver blew up (a joint anchored far from its bodies, a spring too stiff "
@@ -122,3 +133,17 @@ def first_bad(rows: NDArray[np.float64], bounds: NDArray[np.float64]) -> tuple[i
         return None
     row, col = np.argwhere(~ok)[0]
     return int(row), int(col)
+
+
+def state_runaway(space: pymunk.Space, buffer: batch.Buffer) -> Runaway | None:
+    """The first body of ``space`` whose position, angle or velocity is not finite or beyond
+    :data:`STATE_BOUNDS`, or None (``buffer`` is reused for the read)."""
+    buffer.clear()
+    batch.get_space_bodies(space, _STATE, buffer)
+    rows = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 6)
+    bad = first_bad(rows, STATE_BOUNDS)
+    if bad is None:
+        return None
+    row, col = bad
+    body_id = int(np.frombuffer(buffer.int_buf(), dtype=np.uintp)[row])
+    return body_id, STATE_COLUMNS[col], float(rows[row, col]), float(STATE_BOUNDS[col])

@@ -46,7 +46,8 @@ from numpy.typing import NDArray
 
 from playground.controller import State
 from playground.scene import Scene
-from playground.world import Stage, World
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = ["COLUMNS", "PARTIAL", "Recorder", "check_output", "read", "recording"]
 

@@ -51,7 +51,8 @@ from playground.level import Gravity as GravityModel
 from playground.level import Joint as JointModel
 from playground.limits import MAX_MASS_RATIO, MAX_OVERLAP, SPRING_LIMIT
 from playground.perception import Perception
-from playground.world import World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.world import World
 
 if TYPE_CHECKING:
     from playground.controller import Controller

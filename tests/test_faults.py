@@ -12,6 +12,7 @@ import pytest
 from playground import controller, faults, movers, perception, world
 from playground.cli import main
 from playground.level import SEED_SEQUENCES, LevelError, find, load, loads, shipped
+from playground.world import force_api, gravity_stage
 
 ROOMS = ("spinning_ring", "rotating_room", "planet")
 """The artificial-gravity levels: they too must catch at least two breaks."""
@@ -22,6 +23,8 @@ PATCHED = (
     controller.Controller,
     controller.ControllerConfig,
     world.World,
+    force_api.ForceAPI,
+    gravity_stage.GravityStage,
     movers.Mover,
     movers.Spin,
     perception.PerceivedGravity,

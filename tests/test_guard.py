@@ -11,9 +11,9 @@ import pymunk
 import pytest
 
 from playground import World, WorldConfig
-from playground import world as world_mod
 from playground.cli import main
 from playground.guard import GUARD_EVERY, RunawayError
+from playground.world import physics as physics_mod
 
 STEPS = 400
 """Steps a blown-up spring is given: it is NaN within ~40 at 1/60 s."""
@@ -83,7 +83,7 @@ def test_the_cli_reports_a_runaway_with_exit_1_and_keeps_the_recording(
     """Law: ``playground run`` turns a RunawayError into one line and exit code 1, and the
     recording holds every step before the one that ran away. (The force bound is lowered to 1 N
     so that the shipped ``incline`` level trips it once its crate rests on the slope.)"""
-    monkeypatch.setattr(world_mod, "FORCE_BOUNDS", np.array([1.0, 1.0]))
+    monkeypatch.setattr(physics_mod, "FORCE_BOUNDS", np.array([1.0, 1.0]))
     out = tmp_path / "incline.csv"
     code = main(["run", "incline", "--record", str(out)])
     err = capsys.readouterr().err

@@ -246,7 +246,7 @@ def test_scalar_and_vector_paths_give_one_answer(seed: int) -> None:
                 assert _close((a.engine_torque, 0.0), (b.engine_torque, 0.0)), name
                 assert _close(ref.perceived_gravity(name), world.perceived_gravity(name)), name
                 assert _close(ref.perceived_up(name), world.perceived_up(name)), name
-            served += world._scalar_on
+            served += world.on_scalar_path
         if ref.steps % 60 == 0:
             # The arrays are filled from the scalar path when read.
             scalar = others[0][0]

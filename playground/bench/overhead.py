@@ -27,7 +27,9 @@ from playground.bench.pile import floor_length, pile_space, pile_world
 from playground.controller import Controller
 from playground.gravity import GravityRule, Radial, RotatingRoom, Turn
 from playground.movers import Sine
-from playground.world import Stage, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = [
     "EFFECTS",

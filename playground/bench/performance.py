@@ -36,7 +36,9 @@ from playground.bench.pile import floor_length, pile_names, pile_space, pile_wor
 from playground.gravity import Radial
 from playground.perception import Perception
 from playground.scalar import SCALAR_MAX_BODIES
-from playground.world import Stage, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = [
     "GOALS",
@@ -281,7 +283,7 @@ def level_row(name: str, repeats: int = REPEATS) -> LevelRow:
         ratio_hi=hi,
         realtime=world.config.dt / (level_us * 1e-6),
         stages=stages,
-        scalar=world._scalar_on,
+        scalar=world.on_scalar_path,
     )
 
 

@@ -13,7 +13,8 @@ from __future__ import annotations
 import pymunk
 
 from playground.gravity import GravityField
-from playground.world import World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.world import World
 
 __all__ = ["BOX", "COLUMN", "pile_names", "pile_space", "pile_world"]
 

@@ -21,7 +21,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from playground.world import Stage, World
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = [
     "TOP_FUNCTIONS",

@@ -26,7 +26,8 @@ import pymunk
 from playground.controller import Controller, ControllerConfig
 from playground.gravity import STANDARD_GRAVITY
 from playground.movers import Elevator, Spin, ring_room
-from playground.world import World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.world import World
 
 __all__ = ["SCENES", "Knobs", "Scene", "build", "hover_exact"]
 

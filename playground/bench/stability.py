@@ -31,7 +31,9 @@ from playground.controller import Controller
 from playground.gravity import STANDARD_GRAVITY
 from playground.intents import Idle, Intent, Script
 from playground.movers import Spin, Waypoints, ring_room
-from playground.world import Stage, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = [
     "ENERGY_GAIN_BOUND",

@@ -14,7 +14,7 @@ from playground.controller import ControllerConfig
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, record
-from playground.world import World
+from playground.world.world import World
 
 
 @cache

@@ -13,7 +13,8 @@ from playground.controller import ControllerConfig
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, G, level_scene, record
-from playground.world import World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.world import World
 
 SLIDE_DAMPING = 0.5
 """Chapter 2's world keeps half its velocity per second: damping large enough to see."""

@@ -15,7 +15,7 @@ from playground.figures.runs import Array, level_scene, record, shipped_level
 from playground.level import Level, RotatingGravity, Turn
 from playground.level import Ring as RingShape
 from playground.level import Spin as SpinPath
-from playground.world import World
+from playground.world.world import World
 
 
 @cache

@@ -17,7 +17,9 @@ from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, record
 from playground.intents import Intent, Script
-from playground.world import Stage, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 
 @number

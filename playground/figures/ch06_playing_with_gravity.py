@@ -17,7 +17,7 @@ from playground.figures.registry import figure, number
 from playground.figures.runs import Array, G, level_scene, record, shipped_level
 from playground.level import Box as BoxShape
 from playground.level import Waypoints as WaypointsPath
-from playground.world import World
+from playground.world.world import World
 
 
 @cache

@@ -15,7 +15,8 @@ from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, G
 from playground.intents import Intent, Script
-from playground.world import World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.world import World
 
 CH8_DISPLAYS = (60.0, 144.0)
 """Display rates of chapter 8's frame timelines, Hz."""

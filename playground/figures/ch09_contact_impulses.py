@@ -12,7 +12,9 @@ import pymunk
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, G
-from playground.world import Stage, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 DROP_ACCELERATION = 3.0
 """m/s²: chapter 9's platform accelerates downward at this rate (less than g: the box rides it)."""

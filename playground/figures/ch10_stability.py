@@ -15,7 +15,9 @@ from playground.controller import hover_spring
 from playground.figures.plot import save
 from playground.figures.registry import figure, number
 from playground.figures.runs import Array
-from playground.world import Stage, World, WorldConfig
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 CH10_DTS = (1 / 60, 1 / 240)
 """s: the stability matrix's steps (as tests/test_stability.py)."""

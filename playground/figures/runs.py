@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from playground.level import Level
 from playground.scene import Scene
-from playground.world import World
+from playground.world.world import World
 
 Array = NDArray[np.float64]
 

@@ -38,7 +38,8 @@ from playground.view.hud import Hud, HudInfo, StageCosts
 from playground.view.overlay import OVERLAY_KEYS, Overlay, Painter, nearest, roles_of
 from playground.view.scope import Scope
 from playground.view.tuning import Knobs, TuningPanel
-from playground.world import Stage, World
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 __all__ = [
     "CONTROLS",

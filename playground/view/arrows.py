@@ -30,7 +30,7 @@ from dataclasses import dataclass, replace
 
 import pymunk
 
-from playground.world import World
+from playground.world.world import World
 
 __all__ = [
     "G0",

@@ -22,7 +22,7 @@ import pygame.gfxdraw
 import pymunk
 
 from playground.view.camera import Camera
-from playground.world import World
+from playground.world.world import World
 
 __all__ = [
     "COLOURS",

@@ -12,7 +12,7 @@ import pygame
 
 from playground.view.draw import COLOURS
 from playground.view.scope import Scope, draw_scope
-from playground.world import Stage, StageTiming
+from playground.world.schedule import Stage, StageTiming
 
 __all__ = ["Hud", "HudInfo", "StageCosts"]
 

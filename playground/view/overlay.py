@@ -39,7 +39,7 @@ from playground.view.draw import (
     draw_legend,
     draw_world,
 )
-from playground.world import World
+from playground.world.world import World
 
 __all__ = ["OVERLAY_KEYS", "Overlay", "Painter", "roles_of"]
 

@@ -1,0 +1,14 @@
+"""The world: a pymunk space in SI units and the fixed step that runs every stage top-down.
+
+The package's parts: :mod:`~playground.world.world` (the world, its step and its facade),
+:mod:`~playground.world.registry` (named bodies), :mod:`~playground.world.gravity_stage`,
+:mod:`~playground.world.physics` (substeps, forces, filter), :mod:`~playground.world.schedule`
+(stages, hooks, timed events), :mod:`~playground.world.config` and
+:mod:`~playground.world.bodies` (checks, sleeping groups).
+"""
+
+from playground.world.config import WorldConfig
+from playground.world.schedule import Stage, StageTiming
+from playground.world.world import World
+
+__all__ = ["Stage", "StageTiming", "World", "WorldConfig"]

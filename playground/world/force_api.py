@@ -1,0 +1,110 @@
+"""The world's force API: forces, torques and impulses put on bodies, and the readings of the
+tracked bodies (engine forces, perceived gravity, perceived up).
+
+Forces go into the world's :class:`~playground.forces.ForceLedger` after a check of their size
+(a runaway force is refused here, naming the argument, rather than blowing the step up later);
+readings come from the physics stage (:mod:`playground.world.physics`), on whichever path
+serves the tracked bodies.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pymunk
+
+from playground._validate import bounded, bounded_vec
+from playground.forces import BodyForces, Category, ForceLedger
+from playground.limits import MAX_COORDINATE, MAX_IMPULSE, RUNAWAY_FORCE
+from playground.world.config import WorldConfig
+from playground.world.physics import PhysicsStage
+from playground.world.registry import BodyRegistry
+
+__all__ = ["ForceAPI"]
+
+Vec = tuple[float, float]
+
+
+class ForceAPI(BodyRegistry):
+    """Forces in, readings out, by body name (the part of :class:`~playground.world.World` that
+    users and controllers call every step)."""
+
+    ledger: ForceLedger
+    _config: WorldConfig
+    _physics: PhysicsStage
+
+    def track(self, *names: str, perceive: bool = True) -> None:
+        """Recover engine forces for these dynamic bodies every step; ``perceive`` also filters
+        their perceived gravity."""
+        for name in names:
+            self._physics.track(self.body(name), perceive)
+
+    def apply_force(
+        self,
+        body: pymunk.Body | str,
+        force: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Apply ``force`` (N, world frame) at world ``point`` (m) during the coming step."""
+        b = self._own(body)
+        bounded_vec("force", force, RUNAWAY_FORCE if self._config.guard else math.inf, "N")
+        if point is not None:
+            bounded_vec("point", point, MAX_COORDINATE, "m")
+        if b.body_type == pymunk.Body.DYNAMIC:
+            # The ledger's first entry replans the step (its on_first).
+            self.ledger.add(b, force, point=point, category=category)
+
+    def apply_torque(
+        self, body: pymunk.Body | str, torque: float, *, category: Category = Category.APPLIED
+    ) -> None:
+        """Apply a pure ``torque`` (N·m, counter-clockwise) during the coming step."""
+        b = self._own(body)
+        # A torque is a force times a lever of at most the world's size: the same runaway bound.
+        limit = RUNAWAY_FORCE * MAX_COORDINATE if self._config.guard else math.inf
+        bounded("torque", torque, limit, "N·m")
+        if b.body_type == pymunk.Body.DYNAMIC:
+            self.ledger.add_torque(b, torque, category)
+
+    def apply_impulse(
+        self,
+        body: pymunk.Body | str,
+        impulse: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Apply ``impulse`` (N·s) spread over the coming step, as the force impulse/dt."""
+        bounded_vec("impulse", impulse, MAX_IMPULSE, "N·s")
+        dt = self._config.dt
+        self.apply_force(body, (impulse[0] / dt, impulse[1] / dt), point=point, category=category)
+
+    def forces(self, name: str) -> BodyForces:
+        """The last readings of a tracked body."""
+        physics = self._physics
+        if physics.scalar_on:
+            return physics.scalar.reading(self._tracked_row(name))
+        return physics.solver.reading(self._tracked_row(name))
+
+    def perceived_gravity(self, name: str) -> Vec:
+        """The filtered perceived gravity of a tracked body, m/s²."""
+        physics = self._physics
+        if physics.scalar_on:
+            return physics.scalar.gravity(self._tracked_row(name))
+        g = physics.perceived.gravity[self._tracked_row(name)]
+        return (float(g[0]), float(g[1]))
+
+    def perceived_up(self, name: str) -> Vec:
+        """Unit vector opposite the perceived gravity, held through weak readings."""
+        physics = self._physics
+        if physics.scalar_on:
+            return physics.scalar.up(self._tracked_row(name))
+        u = physics.perceived.up[self._tracked_row(name)]
+        return (float(u[0]), float(u[1]))
+
+    def _tracked_row(self, name: str) -> int:
+        row = self._physics.solver.row_of(self.body(name), self._ids[name])
+        if row is None:
+            raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
+        return row

@@ -1,0 +1,194 @@
+"""The gravity stage: the field, each body's own rule, and how the two reach the bodies.
+
+A field uniform in space is ``space.gravity`` (pymunk integrates it at no cost); a body with its
+own rule then gets one correction force, m·(g_rule − g_space), in plain floats. A field that
+varies in space is evaluated once per step at every dynamic body, vectorised, and handed to the
+physics stage as one force row per body. The stage runs only when one of the two is needed.
+
+>>> import pymunk
+>>> from playground.forces import ForceLedger
+>>> space = pymunk.Space()
+>>> stage = GravityStage(space, {}, {}, ForceLedger(), replan=lambda: None)
+>>> stage.set_field(Uniform((0.0, -9.81)), 0.0)
+>>> stage.active, space.gravity
+(False, Vec2d(0.0, -9.81))
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pymunk
+import pymunk.batch as batch
+from numpy.typing import NDArray
+
+from playground._batch import lookup, read_positions
+from playground.forces import Category, ForceLedger
+from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
+
+__all__ = ["FieldForces", "GravityStage"]
+
+Vec = tuple[float, float]
+FieldForces = tuple[NDArray[np.uintp], NDArray[np.float64]]
+"""The body ids of one batch read and the field's force (N) on each, one (fx, fy) row per id."""
+
+_DEFAULT_RULE = GravityRule()
+"""The rule of a body that has none (frozen, so one instance serves every read)."""
+
+
+class GravityStage:
+    """The gravity field and per-body rules of one world (``bodies`` and ``names`` are the
+    world's registry, shared, not copied). ``replan`` is called when the stage starts or stops
+    being needed."""
+
+    def __init__(
+        self,
+        space: pymunk.Space,
+        bodies: dict[str, pymunk.Body],
+        names: dict[int, str],
+        ledger: ForceLedger,
+        replan: Callable[[], None],
+    ) -> None:
+        self.space = space
+        self._bodies = bodies
+        self._names = names
+        self.ledger = ledger
+        self._replan = replan
+        self.field: GravityField = Uniform()
+        self._rules: dict[int, GravityRule] = {}
+        self.active = False
+        """Whether the stage runs: a field that is not constant, or bodies with their own rule."""
+        self._pos_buffer = batch.Buffer()
+        self._registry_dirty = True
+        self._reg_ids = np.zeros(0, dtype=np.uintp)
+        self._reg_mass = np.zeros(0)
+        self._reg_scale = np.zeros(0)
+        self._reg_dir = np.zeros((0, 2))
+        self._field_rows: (
+            tuple[
+                NDArray[np.uintp],
+                NDArray[np.intp],
+                NDArray[np.float64],
+                NDArray[np.float64],
+                NDArray[np.float64],
+            ]
+            | None
+        ) = None
+
+    # -- the field and the rules -----------------------------------------------------------------
+
+    def set_field(self, field: GravityField, t: float) -> None:
+        """Use ``field`` from time ``t`` (s) on."""
+        self.field = field
+        self.space.gravity = self.space_gravity(t)
+        self._update_active()
+
+    def space_gravity(self, t: float) -> Vec:
+        """What ``space.gravity`` holds: the field if uniform, else zero (forces do the work)."""
+        f = self.field
+        if isinstance(f, Uniform):
+            return f.g
+        if isinstance(f, RotatingRoom):
+            return f.vector(t)
+        if f.uniform:
+            g = f.at(np.zeros((1, 2)), t)[0]
+            return (float(g[0]), float(g[1]))
+        return (0.0, 0.0)
+
+    def set_rule(self, body_id: int, rule: GravityRule | None) -> None:
+        """Give the body ``body_id`` its own rule (``None`` or the default rule: the field's)."""
+        if rule is None or rule.is_default:
+            self._rules.pop(body_id, None)
+        else:
+            self._rules[body_id] = rule
+        self._registry_dirty = True
+        self._update_active()
+
+    def rule(self, body_id: int) -> GravityRule:
+        """The body's rule (the default rule if it has none)."""
+        return self._rules.get(body_id, _DEFAULT_RULE)
+
+    def at(self, body: pymunk.Body, t: float) -> Vec:
+        """The gravity ``body`` feels at time ``t`` (field and rule), m/s²."""
+        g = self.field.at(np.array([[body.position.x, body.position.y]]), t)
+        rule = self._rules.get(body.id, _DEFAULT_RULE)
+        d = np.array([rule.direction if rule.direction is not None else (np.nan, np.nan)])
+        out = apply_rules(g, np.array([rule.scale]), d)[0]
+        return (float(out[0]), float(out[1]))
+
+    def bodies_changed(self) -> None:
+        """A body was added or removed or its mass changed: rebuild the registry before the next
+        evaluation."""
+        self._registry_dirty = True
+
+    def forget(self, body_id: int) -> None:
+        """The body left the world: drop its rule."""
+        self._rules.pop(body_id, None)
+        self._registry_dirty = True
+        self._update_active()
+
+    def _update_active(self) -> None:
+        self.active = bool(self._rules) or not isinstance(self.field, Uniform)
+        self._replan()
+
+    # -- the stage -------------------------------------------------------------------------------
+
+    def apply(self, t: float) -> FieldForces | None:
+        """The stage at time ``t`` (s): set ``space.gravity`` and put the rules' corrections in
+        the ledger; for a field that varies in space return its force on every body."""
+        if self._registry_dirty:
+            self._refresh_registry()
+        g_space = self.space_gravity(t)
+        if self.space.gravity != g_space:
+            self.space.gravity = g_space  # setting it wakes every body: only when it changes
+        if self.field.uniform:
+            # Only bodies with their own rule need a correction force: m·(g_rule − g_space), in
+            # plain floats (a handful of bodies: cheaper than numpy's per-call cost).
+            gx, gy = g_space
+            magnitude = math.hypot(gx, gy)
+            for body_id, rule in self._rules.items():
+                body = self._bodies[self._names[body_id]]
+                if rule.direction is None:
+                    rx, ry = rule.scale * gx, rule.scale * gy
+                else:
+                    rx = rule.scale * magnitude * rule.direction[0]
+                    ry = rule.scale * magnitude * rule.direction[1]
+                m = body.mass
+                self.ledger.add(body, (m * (rx - gx), m * (ry - gy)), category=Category.PASSIVE)
+            return None
+        # A field that varies in space: one vectorised evaluation at every dynamic body.
+        ids, pos = read_positions(self.space, self._pos_buffer)
+        cache = self._field_rows
+        if cache is None or not np.array_equal(cache[0], ids):
+            # Row order only changes when bodies are added, removed, sleep or wake.
+            reg = lookup(self._reg_ids, ids)
+            rows = np.nonzero(reg >= 0)[0]
+            idx = reg[rows]
+            mass = np.repeat(self._reg_mass[idx], 2).reshape(-1, 2)  # contiguous [m, m] rows
+            cache = (ids, rows, mass, self._reg_scale[idx], self._reg_dir[idx])
+            self._field_rows = cache
+        _, rows, mass, scale, direction = cache
+        g = self.field.at(np.take(pos, rows, axis=0), t)
+        if self._rules:
+            g = apply_rules(g, scale, direction)
+        # One row per body of the read (zero for static, kinematic and unnamed bodies).
+        force = np.zeros((len(ids), 2))
+        force[rows] = g * mass
+        return ids, force
+
+    def _refresh_registry(self) -> None:
+        """Sorted ids, masses and rules of every named dynamic body, for vectorised gravity."""
+        dyn = [b for b in self._bodies.values() if b.body_type == pymunk.Body.DYNAMIC]
+        dyn.sort(key=lambda b: b.id)
+        self._reg_ids = np.array([b.id for b in dyn], dtype=np.uintp)
+        self._reg_mass = np.array([b.mass for b in dyn], dtype=np.float64)
+        rules = [self._rules.get(b.id, GravityRule()) for b in dyn]
+        self._reg_scale = np.array([r.scale for r in rules], dtype=np.float64)
+        self._reg_dir = np.array(
+            [r.direction if r.direction is not None else (np.nan, np.nan) for r in rules],
+            dtype=np.float64,
+        ).reshape(-1, 2)
+        self._registry_dirty = False
+        self._field_rows = None

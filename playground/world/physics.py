@@ -1,0 +1,259 @@
+"""The physics stage and the readings of tracked bodies: step the space, recover its forces,
+filter what the bodies feel.
+
+Three stages of the step live here. PHYSICS writes the ledger's forces, the field's forces and any
+force set straight on a body before every substep (pymunk clears them after each) and steps the
+space; FORCES recovers each tracked body's engine forces by reverse integration; FILTER turns them
+into perceived gravity. Few tracked bodies with one substep, no contact split and a field uniform
+in space are served by the scalar path in plain floats (:mod:`playground.scalar`); the rest by
+numpy and ``pymunk.batch`` (:class:`~playground.forces.ForceSolver`,
+:class:`~playground.perception.PerceivedGravity`). Both paths give the same readings; the state
+moves with a switch.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pymunk
+from numpy.typing import NDArray
+
+from playground._batch import BodyRows, lookup
+from playground.forces import ForceLedger, ForceSolver
+from playground.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
+from playground.limits import RUNAWAY_FORCE
+from playground.perception import PerceivedGravity
+from playground.scalar import ScalarPath
+from playground.world.config import WorldConfig
+from playground.world.gravity_stage import FieldForces
+
+__all__ = ["PhysicsStage"]
+
+Vec = tuple[float, float]
+
+
+class PhysicsStage:
+    """The space's substeps and the tracked bodies' solver and filter, on the scalar or the batch
+    path. ``replan`` is called when the tracked set changes; ``up_at`` gives a body's up until it
+    feels a force."""
+
+    def __init__(
+        self,
+        space: pymunk.Space,
+        config: WorldConfig,
+        ledger: ForceLedger,
+        replan: Callable[[], None],
+        up_at: Callable[[pymunk.Body], Vec],
+    ) -> None:
+        self.space = space
+        self.ledger = ledger
+        self._replan = replan
+        self._up_at = up_at
+        self.solver = ForceSolver(
+            contact_split=config.contact_split, check_sleep=math.isfinite(config.sleep_time)
+        )
+        self.perceived = PerceivedGravity(config.perception)
+        self.perceivers: set[int] = set()
+        """Ids of the tracked bodies whose perceived gravity is filtered."""
+        # Few tracked bodies: the scalar path serves them in plain floats (see choose_path).
+        self.scalar = ScalarPath()
+        self.scalar_on = False
+        self._scalar_synced = True
+        self._rows = BodyRows()
+        # space.step calls outside the bare path (which runs only with nothing tracked): the
+        # solver's substep stamps.
+        self._space_steps = 0
+        self.config = config
+        self.configure(config)
+
+    def configure(self, config: WorldConfig) -> None:
+        """Take new settings (the world's config changed)."""
+        self.config = config
+        self.solver.contact_split = config.contact_split
+        self.solver.check_sleep = math.isfinite(config.sleep_time)
+
+    # -- the path --------------------------------------------------------------------------------
+
+    def choose_path(self, max_bodies: int, uniform_gravity: bool) -> None:
+        """Serve the tracked bodies on the scalar path if they are at most ``max_bodies`` with one
+        substep, no contact split and a field uniform in space; on the batch path otherwise."""
+        cfg = self.config
+        scalar = (
+            0 < len(self.solver.bodies) <= max_bodies
+            and cfg.substeps == 1
+            and not cfg.contact_split
+            and uniform_gravity
+        )
+        if scalar != self.scalar_on:
+            if scalar:
+                self.scalar.load(self.solver, self.perceived)
+                self._scalar_synced = True
+            else:
+                self.sync()
+            self.scalar_on = scalar
+
+    def sync(self) -> None:
+        """Copy the scalar path's readings into the solver and the filter (for their readers)."""
+        if self.scalar_on and not self._scalar_synced:
+            self.scalar.store(self.solver, self.perceived)
+            self._scalar_synced = True
+
+    def _leave_scalar(self) -> None:
+        """Hand the scalar path's state back before the tracked set or the masses change."""
+        if self.scalar_on:
+            self.sync()
+            self.scalar_on = False
+            self._replan()
+
+    # -- the tracked bodies ----------------------------------------------------------------------
+
+    def track(self, body: pymunk.Body, perceive: bool) -> None:
+        """Recover ``body``'s engine forces every step; ``perceive`` also filters its gravity."""
+        self._leave_scalar()
+        old = len(self.solver.bodies)
+        self.solver.track(body)
+        if len(self.solver.bodies) > old:
+            self.perceived.resize(np.concatenate([np.arange(old), [-1]]).astype(np.intp))
+        if perceive:
+            self.perceivers.add(body.id)
+        self._replan()
+
+    def untrack(self, body: pymunk.Body) -> None:
+        self._leave_scalar()
+        row = self.solver.row_of(body)
+        assert row is not None
+        n = len(self.solver.bodies)
+        self.solver.untrack(body)
+        self.perceived.resize(np.delete(np.arange(n), row).astype(np.intp))
+        self.perceivers.discard(body.id)
+        self._replan()
+
+    def refresh_masses(self) -> None:
+        """A body's mass or moment changed."""
+        self.solver.refresh_masses()
+        if self.scalar_on:
+            self.scalar.refresh_masses()
+
+    def runaway(self) -> Runaway | None:
+        """The first tracked reading that is not finite or beyond the runaway bound, or None."""
+        if self.scalar_on:
+            bad = self.scalar.first_bad(RUNAWAY_FORCE)
+            if bad is None:
+                return None
+            row, col = bad
+            value = self.scalar.engine(row)[col]
+            return self.solver.bodies[row].id, FORCE_COLUMNS[col], value, RUNAWAY_FORCE
+        bad = first_bad(self.solver.engine, FORCE_BOUNDS)
+        if bad is None:
+            return None
+        row, col = bad
+        value = float(self.solver.engine[row, col])
+        return self.solver.bodies[row].id, FORCE_COLUMNS[col], value, float(FORCE_BOUNDS[col])
+
+    # -- the stages ------------------------------------------------------------------------------
+
+    def step(self, field: FieldForces | None) -> None:
+        """PHYSICS: write the forces, step the space ``config.substeps`` times, and feed each
+        substep's velocities to the solver. ``field`` is the gravity stage's force on every body
+        of a field that varies in space."""
+        cfg = self.config
+        n = cfg.substeps
+        h = cfg.dt / n
+        self.ledger.flush()
+        field_force = None if field is None else field[1]
+        # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
+        # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
+        scalar = self.scalar_on
+        batched = field_force is not None or (bool(self.solver.bodies) and not scalar) or n > 1
+        if batched:
+            self._rows.read(self.space)
+            field_rows: NDArray[np.float64] | None
+            if field is not None and np.array_equal(field[0], self._rows.ids):
+                field_rows = field[1]  # same read order (the usual case): no re-keying
+                self._rows.state[:, 3:5] += field_rows
+                self._write_forces()
+            elif field is not None:
+                field_ids, forces = field
+                at = lookup(np.sort(field_ids), self._rows.ids)
+                order = np.argsort(field_ids)
+                hit = np.nonzero(at >= 0)[0]
+                field_rows = np.zeros((len(self._rows.ids), 2))
+                field_rows[hit] = forces[order[at[hit]]]
+                self._rows.state[:, 3:5] += field_rows
+                self._write_forces()
+            else:
+                field_rows = None
+            if self.solver.bodies and not scalar:
+                self.solver.before_step(self._rows.ids, self._rows.state, field_rows)
+        if scalar:
+            self.scalar.before_step()
+            self._scalar_synced = False
+        for k in range(n):
+            if k > 0:
+                self._write_forces()
+            # Chipmunk rescales warm starts by h / (its last step) when the length changes.
+            rescaled = self.config.contact_split and self.space.current_time_step != h
+            self.space.step(h)
+            self._space_steps += 1
+            if scalar:
+                self.scalar.after_substep(check_sleep=self.solver.check_sleep)
+            elif self.solver.bodies:
+                ids, vel = self._rows.read_velocities(self.space)
+                self.solver.after_substep(
+                    self.space,
+                    ids,
+                    vel,
+                    last=k == n - 1,
+                    stamp=self._space_steps,
+                    rescaled=rescaled,
+                )
+
+    def _write_forces(self) -> None:
+        """Write the forces of the last batch read back, in one batch or per body if sleeping."""
+        if math.isfinite(self.config.sleep_time):
+            by_id = {b.id: b for b in self.space.bodies}
+            for body_id, row in zip(self._rows.ids, self._rows.state, strict=True):
+                body = by_id.get(int(body_id))
+                # Setting a force wakes a body and restarts its idle clock: write only non-zero
+                # forces (pymunk cleared the rest after the last substep).
+                if (
+                    body is not None
+                    and body.body_type == pymunk.Body.DYNAMIC
+                    and (row[3] != 0.0 or row[4] != 0.0 or row[5] != 0.0)
+                ):
+                    body.force = (row[3], row[4])
+                    body.torque = row[5]
+        else:
+            self._rows.write_forces(self.space, self._rows.state[:, 3:6])
+
+    def solve(self) -> None:
+        """FORCES: reverse integration for the tracked bodies."""
+        cfg = self.config
+        if self.scalar_on:
+            g = self.space.gravity
+            self.scalar.finish(
+                dt=cfg.dt, damping=cfg.damping, space_gravity=(g.x, g.y), ledger=self.ledger
+            )
+            return
+        self.solver.finish(
+            dt=cfg.dt,
+            substeps=cfg.substeps,
+            damping=cfg.damping,
+            space_gravity=(self.space.gravity.x, self.space.gravity.y),
+            ledger=self.ledger,
+        )
+
+    def filter(self) -> None:
+        """FILTER: perceived gravity for the bodies that perceive."""
+        dt = self.config.dt
+        if self.scalar_on:
+            self.scalar.filter(dt, self.perceived.config.up_threshold, self._up_at)
+            return
+        self.perceived.update(self.solver.specific, self.solver.valid, dt)
+        if self.perceived.up_complete:
+            return
+        # Until a body has felt anything, its up is against the gravity field at it.
+        for row in np.nonzero(~np.isfinite(self.perceived.up).all(axis=1))[0]:
+            self.perceived.up[row] = self._up_at(self.solver.bodies[row])

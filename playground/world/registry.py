@@ -1,0 +1,187 @@
+"""The named bodies of one space: adding, looking up and removing them, and putting them to sleep.
+
+:class:`BodyRegistry` is the part of :class:`~playground.world.world.World` that keeps the space
+and the names of its bodies; the world learns of each change through :meth:`BodyRegistry._added`
+and :meth:`BodyRegistry._removed` (its stages follow: gravity registry, tracking, movers).
+
+>>> registry = BodyRegistry()
+>>> _ = registry.add_box("crate", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+>>> registry.names, registry.name_of(registry.body("crate"))
+(['crate'], 'crate')
+"""
+
+from __future__ import annotations
+
+import math
+
+import pymunk
+
+from playground._validate import bounded, bounded_vec, finite, in_range
+from playground.limits import MAX_ANGLE, MAX_COORDINATE, MAX_LENGTH, MAX_MASS, MIN_MASS
+from playground.world.bodies import check_body, check_size, check_surface, group, surfaced
+
+__all__ = ["BodyRegistry"]
+
+Vec = tuple[float, float]
+
+
+class BodyRegistry:
+    """A pymunk space and its bodies by name (unique names; unnamed static shapes allowed)."""
+
+    def __init__(self) -> None:
+        self.space = pymunk.Space()
+        self._bodies: dict[str, pymunk.Body] = {}
+        # Each body's id by name: ``body.id`` is a call into chipmunk, and controllers look up
+        # their rule and tracked row by name every step.
+        self._ids: dict[str, int] = {}
+        self._names: dict[int, str] = {}
+
+    def _added(self, body: pymunk.Body) -> None:
+        """A named body joined the space (the world's stages follow)."""
+
+    def _removed(self, body: pymunk.Body) -> None:
+        """A named body left the registry; it is still in the space (the world's stages
+        follow)."""
+
+    def add(self, name: str, body: pymunk.Body, *shapes: pymunk.Shape) -> pymunk.Body:
+        """Add a named body and its shapes. Names are unique.
+
+        Its mass, state and shapes must lie in the ranges of :mod:`playground.limits`
+        (``ValueError`` naming the attribute otherwise): pymunk aborts the process on some
+        absurd values and carries NaN through every later step on others.
+        """
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"name: expected a non-empty string, got {name!r}")
+        if name in self._bodies:
+            raise ValueError(f"{name}: a body with this name already exists")
+        check_body(name, body, shapes)
+        self.space.add(body, *shapes)
+        self._bodies[name] = body
+        self._ids[name] = body.id
+        self._names[body.id] = name
+        self._added(body)
+        return body
+
+    def remove(self, name: str) -> None:
+        """Remove a body, its shapes and constraints, and stop tracking it."""
+        body = self._bodies.pop(name)
+        del self._ids[name]
+        del self._names[body.id]
+        self._removed(body)
+        self.space.remove(*body.shapes, *body.constraints, body)
+
+    def body(self, name: str) -> pymunk.Body:
+        """The body called ``name`` (KeyError naming the known bodies otherwise)."""
+        try:
+            return self._bodies[name]
+        except KeyError:
+            known = ", ".join(sorted(self._bodies)) or "none"
+            raise KeyError(f"no body named {name!r} (known: {known})") from None
+
+    def body_at(self, point: Vec, radius: float = 0.0) -> str | None:
+        """The named body with a shape at world ``point`` (m) or within ``radius`` (m) of it (the
+        nearest if several), or None (unnamed bodies such as static ground do not count).
+
+        >>> registry = BodyRegistry()
+        >>> _ = registry.add_box("crate", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+        >>> registry.body_at((0.2, 0.7)), registry.body_at((2.0, 0.5))
+        ('crate', None)
+        >>> registry.body_at((0.6, 0.5), 0.2)
+        'crate'
+        """
+        bounded_vec("point", point, MAX_COORDINATE, "m")
+        finite("radius", radius)
+        info = self.space.point_query_nearest(point, max(radius, 0.0), pymunk.ShapeFilter())
+        if info is None or info.shape is None or info.shape.body is None:
+            return None
+        return self._names.get(info.shape.body.id)
+
+    def name_of(self, body: pymunk.Body) -> str | None:
+        return self._names.get(body.id)
+
+    @property
+    def names(self) -> list[str]:
+        return list(self._bodies)
+
+    def _own(self, body: pymunk.Body | str) -> pymunk.Body:
+        """The body by name, or a body object that is in this space (``ValueError`` otherwise)."""
+        if isinstance(body, str):
+            return self.body(body)
+        if not isinstance(body, pymunk.Body) or body.space is not self.space:
+            raise ValueError(f"body: expected a body name or a body of this world, got {body!r}")
+        return body
+
+    def add_box(
+        self,
+        name: str,
+        *,
+        mass: float,
+        size: Vec,
+        position: Vec,
+        angle: float = 0.0,
+        friction: float = 0.8,
+        elasticity: float = 0.0,
+    ) -> pymunk.Body:
+        """A dynamic box of ``size`` (w, h in m) and ``mass`` (kg)."""
+        in_range("mass", mass, MIN_MASS, MAX_MASS, "kg")
+        check_size("size", size)
+        bounded_vec("position", position, MAX_COORDINATE, "m")
+        bounded("angle", angle, MAX_ANGLE, "rad")
+        check_surface("", friction, elasticity)
+        body = pymunk.Body(mass, pymunk.moment_for_box(mass, size))
+        body.position = position
+        body.angle = angle
+        return self.add(
+            name, body, surfaced(pymunk.Poly.create_box(body, size), friction, elasticity)
+        )
+
+    def add_static_segment(
+        self,
+        a: Vec,
+        b: Vec,
+        radius: float = 0.05,
+        *,
+        friction: float = 1.0,
+        elasticity: float = 0.0,
+    ) -> pymunk.Segment:
+        """A static segment from ``a`` to ``b`` (m) on the space's static body."""
+        bounded_vec("a", a, MAX_COORDINATE, "m")
+        bounded_vec("b", b, MAX_COORDINATE, "m")
+        in_range("radius", radius, 0.0, MAX_LENGTH, "m")
+        check_surface("", friction, elasticity)
+        seg = surfaced(pymunk.Segment(self.space.static_body, a, b, radius), friction, elasticity)
+        self.space.add(seg)
+        return seg
+
+    def sleep(self, name: str) -> None:
+        """Put a body to sleep now, with every dynamic body it touches or is jointed to.
+
+        Chipmunk sleeps and wakes such a group together; a body put to sleep alone while it
+        touches an awake one corrupts its memory, and one put to sleep twice aborts the process.
+        So the whole group is woken, then put to sleep around ``name``; a sleeping body is left
+        as it is. Any force, contact or change of gravity wakes the group again.
+        """
+        if not math.isfinite(self.space.sleep_time_threshold):
+            raise ValueError(
+                f"{name}: sleeping is off in this world (WorldConfig.sleep_time = inf); "
+                "give the world a finite sleep_time to put bodies to sleep"
+            )
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only a dynamic body can sleep")
+        if body.is_sleeping:
+            return
+        members = group(body)
+        for other in members:
+            other.activate()
+        body.sleep()
+        for other in members:
+            if other is not body:
+                other.sleep_with_group(body)
+
+    def wake(self, name: str) -> None:
+        """Wake a sleeping body and its group (nothing happens to an awake one)."""
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only a dynamic body sleeps or wakes")
+        body.activate()

@@ -1,0 +1,396 @@
+"""The world: a pymunk space in SI units, its named bodies, and the fixed step that runs every
+stage top-down.
+
+The stages (docs/design.md §4) are named by :class:`~playground.world.schedule.Stage`; a stage the
+scene does not need is skipped without cost (uniform gravity is ``space.gravity``; no tracked
+body, no solver; no perceiver, no filter). Each stage can be timed. The world keeps the body
+registry and the step; the gravity stage (:mod:`~playground.world.gravity_stage`), the physics
+stage (:mod:`~playground.world.physics`) and the schedule (:mod:`~playground.world.schedule`)
+are parts of their own.
+
+>>> world = World()
+>>> box = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.5))
+>>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+>>> world.track("crate")
+>>> world.run(1.0)
+>>> round(world.forces("crate").support[1], 6)
+98.1
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import pymunk
+import pymunk.batch as batch
+
+from playground._validate import bounded_vec, in_range
+from playground.forces import ForceLedger, ForceSolver
+from playground.gravity import GravityField, GravityRule, Uniform
+from playground.guard import GUARD_EVERY, RunawayError, state_runaway
+from playground.limits import (
+    MAX_GRAVITY,
+    MAX_MASS,
+    MAX_MOMENT,
+    MIN_MASS,
+    MIN_MOMENT,
+)
+from playground.movers import Mover, Path
+from playground.perception import PerceivedGravity, Perception
+from playground.scalar import SCALAR_MAX_BODIES
+from playground.world.config import WorldConfig
+from playground.world.force_api import ForceAPI
+from playground.world.gravity_stage import GravityStage
+from playground.world.physics import PhysicsStage
+from playground.world.schedule import (
+    EVENT_EARLY,
+    Hook,
+    Schedule,
+    Stage,
+    StageTiming,
+    run_hooks,
+)
+
+__all__ = ["World"]
+
+Vec = tuple[float, float]
+
+_NEVER = 2**62
+"""A step number no run reaches: the guard's next check when the guard is off."""
+
+
+class World(ForceAPI):
+    """A pymunk space in SI units, stepped at a fixed dt through the stages of :class:`Stage`.
+
+    Bodies are added by name (:meth:`add`); the world registers masses for per-body gravity and
+    tracks forces only for bodies passed to :meth:`track`. Scripts and controllers hook into the
+    INPUTS, EVENTS, CONTROL and OBSERVE stages with :meth:`on`; forces and torques go through
+    :meth:`apply_force` and :meth:`apply_torque` (they check their input and land in
+    :attr:`ledger`, which records their categories for the solver). A force set straight on a
+    pymunk body acts too, for the whole step like any other (see ``WorldConfig.substeps``); the
+    solver counts it as APPLIED. The space drops an arbiter as soon as its contact ends
+    (``collision_persistence`` 1), so arbiter impulses are the impulses applied (see
+    :class:`~playground.forces.ForceSolver`).
+    """
+
+    def __init__(
+        self,
+        config: WorldConfig | None = None,
+        gravity: GravityField | Sequence[float] | None = None,
+    ) -> None:
+        super().__init__()
+        self._config = config if config is not None else WorldConfig()
+        # Chipmunk keeps an arbiter 3 steps after its contact ends by default; a contact made
+        # again from it starts from the old accumulated impulse without applying it, so the
+        # arbiter reports an impulse the bodies never received (see ForceSolver). Dropping
+        # arbiters at once loses no warm start (such a first contact is never warm-started), and
+        # the new contact no longer starts from an impulse that lets it pull, or grip beyond its
+        # own normal impulse.
+        self.space.collision_persistence = 1
+        self._bare = False
+        # Whether the next step must decide again what it runs: written by _replan and _plan only.
+        self._plan_dirty = True
+        self.time = 0.0
+        self._epoch = (0, 0.0)  # (steps, time) when dt last changed
+        self.steps = 0
+        self.ledger = ForceLedger(on_first=self._replan)
+        self.scalar_max_bodies = SCALAR_MAX_BODIES
+        """Most tracked bodies the scalar path serves (0: never; set before stepping)."""
+        self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
+        self._movers: list[Mover] = []
+        self._schedule = Schedule(self._replan)
+        self._gravity = GravityStage(
+            self.space, self._bodies, self._names, self.ledger, self._replan
+        )
+        self._physics = PhysicsStage(
+            self.space, self._config, self.ledger, self._replan, self._up_at
+        )
+        self._guard_next = GUARD_EVERY if self._config.guard else _NEVER
+        self._state_buffer = batch.Buffer()
+        self.config = self._config
+        self.gravity = gravity if gravity is not None else Uniform()
+
+    # -- configuration ---------------------------------------------------------------------------
+
+    @property
+    def config(self) -> WorldConfig:
+        """The simulation settings. Replacing them applies the new space settings (dt, substeps,
+        iterations, damping, slop, sleeping, contact split, timing); perception is fixed."""
+        return self._config
+
+    @config.setter
+    def config(self, config: WorldConfig) -> None:
+        if config.perception != self._config.perception:
+            raise ValueError("config.perception: change it with set_perception")
+        if config.dt != self._config.dt:
+            # Time goes on from now at the new step (time is counted from this epoch, not as a
+            # running sum, so it does not drift).
+            self._epoch = (self.steps, self.time)
+        self._config = config
+        self.space.iterations = config.iterations
+        self.space.damping = config.damping
+        self.space.collision_slop = config.collision_slop
+        self.space.sleep_time_threshold = config.sleep_time
+        self._physics.configure(config)
+        self._guard_next = self.steps + GUARD_EVERY if config.guard else _NEVER
+        self._replan()
+
+    def set_perception(self, perception: Perception) -> None:
+        """Re-tune how perceived gravity is filtered (1€ parameters, up threshold) from the next
+        step on, keeping the filter's state; the spike stage is fixed when the world is built."""
+        if not isinstance(perception, Perception):
+            raise ValueError(f"perception: expected a Perception, got {perception!r}")
+        self._physics.perceived.tune(perception)
+        self._config = dataclasses.replace(self._config, perception=perception)
+
+    def _replan(self) -> None:
+        """Plan the next step again (something it must or need not do has changed)."""
+        self._plan_dirty = True
+
+    def _plan(self) -> None:
+        """Decide whether the next steps are bare (nothing but ``space.step``), and which path
+        serves the tracked bodies (:meth:`PhysicsStage.choose_path`)."""
+        cfg = self._config
+        gravity = self._gravity
+        physics = self._physics
+        schedule = self._schedule
+        physics.choose_path(self.scalar_max_bodies, not gravity.active or gravity.field.uniform)
+        self._bare = not (
+            schedule.inputs
+            or schedule.events
+            or schedule.event_hooks
+            or gravity.active
+            or self._movers
+            or schedule.controls
+            or physics.solver.bodies
+            or physics.perceivers
+            or schedule.observers
+            or len(self.ledger)
+            or cfg.timing
+            or cfg.substeps != 1
+        )
+        self._plan_dirty = False
+
+    @property
+    def solver(self) -> ForceSolver:
+        """The force solver: membership and readings of the tracked bodies (the scalar path's
+        readings are copied in when it serves them)."""
+        self._physics.sync()
+        return self._physics.solver
+
+    @property
+    def perceived(self) -> PerceivedGravity:
+        """Perceived gravity of the tracked bodies (filled from the scalar path when it serves)."""
+        self._physics.sync()
+        return self._physics.perceived
+
+    @property
+    def on_scalar_path(self) -> bool:
+        """Whether the scalar path (plain floats, :mod:`playground.scalar`) serves the tracked
+        bodies in the coming steps (as last planned)."""
+        return self._physics.scalar_on
+
+    # -- gravity ---------------------------------------------------------------------------------
+
+    @property
+    def gravity(self) -> GravityField:
+        """The gravity field (m/s²). A plain (gx, gy) is accepted and becomes :class:`Uniform`."""
+        return self._gravity.field
+
+    @gravity.setter
+    def gravity(self, value: GravityField | Sequence[float]) -> None:
+        if not isinstance(value, GravityField):
+            bounded_vec("gravity", tuple(value), MAX_GRAVITY, "m/s²")
+            value = Uniform((float(value[0]), float(value[1])))
+        self._gravity.set_field(value, self.time)
+
+    def set_gravity_rule(self, name: str, rule: GravityRule | None) -> None:
+        """Give one body its own gravity: a scale (0 nullifies it) or its own direction.
+
+        ``None`` restores the field.
+        """
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only dynamic bodies feel gravity")
+        self._gravity.set_rule(body.id, rule)
+
+    def gravity_rule(self, name: str) -> GravityRule:
+        """The body's rule (the default rule if it has none)."""
+        self.body(name)  # KeyError naming the known bodies
+        return self._gravity.rule(self._ids[name])
+
+    def gravity_at(self, name: str) -> Vec:
+        """The gravity this body feels now (field and rule), m/s²."""
+        return self._gravity.at(self.body(name), self.time)
+
+    def _up_at(self, body: pymunk.Body) -> Vec:
+        """The unit vector against the gravity field at a body: its up until it feels one."""
+        g = self.gravity_at(self._names[body.id])
+        n = math.hypot(*g)
+        return (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
+
+    # -- bodies ----------------------------------------------------------------------------------
+
+    def _added(self, body: pymunk.Body) -> None:
+        self._gravity.bodies_changed()
+
+    def _removed(self, body: pymunk.Body) -> None:
+        self._gravity.forget(body.id)
+        if self._physics.solver.row_of(body) is not None:
+            self._physics.untrack(body)
+        self._movers = [m for m in self._movers if m.body is not body]
+        self._replan()
+
+    def set_mass(self, name: str, mass: float, moment: float | None = None) -> None:
+        """Change a body's mass (kg) and optionally moment (kg·m²; ∞ locks its rotation); the
+        solver follows."""
+        in_range("mass", mass, MIN_MASS, MAX_MASS, "kg")
+        if moment is not None and moment != math.inf:
+            in_range("moment", moment, MIN_MOMENT, MAX_MOMENT, "kg·m²")
+        body = self.body(name)
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{name}: only a dynamic body has a mass to change")
+        body.mass = mass
+        if moment is not None:
+            body.moment = moment
+        self._physics.refresh_masses()
+        self._gravity.bodies_changed()
+
+    def add_mover(self, name: str, path: Path) -> Mover:
+        """Drive the kinematic body ``name`` along ``path`` (placed at its pose now)."""
+        mover = Mover(self.body(name), path)
+        mover.place(self.time)
+        self._movers.append(mover)
+        self._replan()
+        return mover
+
+    # -- hooks and events ------------------------------------------------------------------------
+
+    def on(self, stage: Stage, hook: Hook) -> None:
+        """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE)."""
+        self._schedule.on(stage, hook)
+
+    def off(self, stage: Stage, hook: Hook) -> None:
+        """Stop running ``hook`` in ``stage``: the opposite of :meth:`on`. Safe from inside a
+        step: the stage that is running finishes with the hooks it started with.
+
+        >>> world = World()
+        >>> def count(w: World) -> None: ...
+        >>> world.on(Stage.OBSERVE, count)
+        >>> world.off(Stage.OBSERVE, count)
+        >>> world.off(Stage.OBSERVE, count)
+        Traceback (most recent call last):
+        ...
+        ValueError: hook: count is not registered in OBSERVE
+        """
+        self._schedule.off(stage, hook)
+
+    def at(self, t: float, event: Hook) -> None:
+        """Run ``event(world)`` once, in the EVENTS stage of the first step starting at or after
+        ``t`` (s). Events at the same time run in the order they were scheduled."""
+        self._schedule.at(t, event)
+
+    # -- the step --------------------------------------------------------------------------------
+
+    def step(self) -> None:
+        """Advance one fixed step of ``config.dt`` seconds through the stages, top-down."""
+        if self._plan_dirty:
+            self._plan()
+        if self._bare:
+            # A scene that calls for no effect costs what bare pymunk costs.
+            self.space.step(self._config.dt)
+            self.steps += 1
+            self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
+            if self.steps >= self._guard_next:
+                self._guard_all()
+            return
+        run = self._run_timed if self._config.timing else _run
+        schedule = self._schedule
+        gravity = self._gravity
+        physics = self._physics
+        # 1. inputs: scripts and keyboards turn into intents
+        if schedule.inputs:
+            run(Stage.INPUTS, run_hooks, schedule.inputs, self)
+        # 2. events: scheduled scene changes
+        events = schedule.events
+        if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
+            run(Stage.EVENTS, schedule.run_events, self)
+        # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
+        field = None
+        if gravity.active:
+            field = run(Stage.GRAVITY, gravity.apply, self.time)
+        # 4. movers: kinematic bodies get the velocity that reaches their next pose
+        if self._movers:
+            run(Stage.MOVERS, self._drive_movers)
+        # 5. control: controllers sense and put their forces in the ledger
+        if schedule.controls:
+            run(Stage.CONTROL, run_hooks, schedule.controls, self)
+        # 6. physics: flush forces, step the space (re-applying forces every substep)
+        run(Stage.PHYSICS, physics.step, field)
+        # 7. forces: reverse integration for tracked bodies
+        if physics.solver.bodies:
+            run(Stage.FORCES, physics.solve)
+        # 8. filter: perceived gravity for the bodies that perceive
+        if physics.perceivers:
+            run(Stage.FILTER, physics.filter)
+        if len(self.ledger):
+            self.ledger.clear()
+            self._replan()
+        self.steps += 1
+        # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
+        self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
+        # the guard: nothing non-finite or runaway reaches the observers
+        if physics.solver.bodies and self._config.guard:
+            bad = physics.runaway()
+            if bad is not None:
+                self._runaway(*bad)
+        if self.steps >= self._guard_next:
+            self._guard_all()
+        # 9. observe: recorders, checks, views — read-only
+        if schedule.observers:
+            run(Stage.OBSERVE, run_hooks, schedule.observers, self)
+
+    def run(self, seconds: float) -> None:
+        """Step for ``seconds`` of simulated time (rounded to whole steps)."""
+        steps = seconds / self.config.dt
+        if not (math.isfinite(steps) and steps >= 0.0):
+            raise ValueError(f"seconds: expected a finite number of seconds >= 0, got {seconds!r}")
+        for _ in range(round(steps)):
+            self.step()
+
+    def _run_timed(self, stage: Stage, fn: Callable[..., Any], *args: object) -> Any:
+        t0 = time.perf_counter()
+        out = fn(*args)
+        elapsed = time.perf_counter() - t0
+        timing = self.timings[stage]
+        timing.total += elapsed
+        timing.calls += 1
+        timing.last = elapsed
+        return out
+
+    def _drive_movers(self) -> None:
+        for mover in self._movers:
+            mover.drive(self.time, self.config.dt)
+
+    def _guard_all(self) -> None:
+        """Stop if any body's position, angle or velocity is not finite or runs away."""
+        self._guard_next = self.steps + GUARD_EVERY
+        bad = state_runaway(self.space, self._state_buffer)
+        if bad is not None:
+            self._runaway(*bad)
+
+    def _runaway(
+        self, body_id: int, column: tuple[str, str, str], value: float, bound: float
+    ) -> None:
+        name = self._names.get(body_id)
+        who = repr(name) if name is not None else f"an unnamed body (id {body_id})"
+        raise RunawayError(who, self.steps, self.time, column, value, float(bound))
+
+
+def _run(stage: Stage, fn: Callable[..., Any], *args: object) -> Any:
+    """Run one stage untimed (``stage`` names it for :meth:`World._run_timed`'s sake)."""
+    return fn(*args)
