@@ -46,7 +46,10 @@ from playground import __version__
 from playground._preflight import UsageError, writable
 from playground.bench import cli as bench_cli
 from playground.guard import RunawayError
-from playground.level import LevelError, find, load, schema, shipped
+from playground.level.document import schema
+from playground.level.errors import LevelError
+from playground.level.files import find, shipped
+from playground.level.loading import load
 from playground.limits import MAX_DT, MAX_SECONDS, MAX_TIME, MIN_DT
 
 __all__ = ["EXIT_FAILED", "EXIT_INTERRUPTED", "EXIT_OK", "EXIT_USAGE", "main", "parser"]

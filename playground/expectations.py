@@ -22,7 +22,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from playground.filters import FilterChain, Median3, OneEuroFilter
-from playground.level import CONTROLLER_QUANTITIES, Expectation, Level, Reading
+from playground.level.document import Level
+from playground.level.expect import CONTROLLER_QUANTITIES, Expectation, Reading
 from playground.scene import Scene
 from playground.world.schedule import Stage
 from playground.world.world import World

@@ -33,7 +33,7 @@ from playground import movers as movers_mod
 from playground import perception as perception_mod
 from playground.forces import Category
 from playground.gravity import GravityRule
-from playground.level import Level
+from playground.level.document import Level
 from playground.world import force_api, gravity_stage
 from playground.world import world as world_mod
 

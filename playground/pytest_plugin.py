@@ -23,7 +23,9 @@ from typing import Any
 
 import pytest
 
-from playground.level import SCHEMA_ID, Level, LevelError, load
+from playground.level.document import SCHEMA_ID, Level
+from playground.level.errors import LevelError
+from playground.level.loading import load
 
 __all__ = ["INI_OPTION", "LevelFile", "LevelItem", "declares_level"]
 

@@ -21,34 +21,24 @@ import pymunk
 from playground import gravity as gravity_mod
 from playground import movers as movers_mod
 from playground.gravity import GravityField, GravityRule, Uniform
-from playground.level import (
-    STATIC,
-    Actor,
+from playground.level.bodies import Actor, MoverModel, Prop, controller_config
+from playground.level.document import Level
+from playground.level.errors import LevelError, Problem
+from playground.level.gravity import Gravity as GravityModel
+from playground.level.joints import STATIC
+from playground.level.joints import Joint as JointModel
+from playground.level.shapes import Box, Capsule, CircleShape, Polygon, Ring, Segment, Shape
+from playground.level.timeline import (
     BodyGravity,
-    Box,
-    Capsule,
-    CircleShape,
     Event,
     FlipGravity,
     Impulse,
-    Level,
-    LevelError,
-    MoverModel,
     Nullify,
-    Polygon,
-    Problem,
-    Prop,
     Remove,
     RestoreGravity,
-    Ring,
-    Segment,
     SetGravity,
-    Shape,
     Spawn,
-    _controller_config,
 )
-from playground.level import Gravity as GravityModel
-from playground.level import Joint as JointModel
 from playground.limits import MAX_MASS_RATIO, MAX_OVERLAP, SPRING_LIMIT
 from playground.perception import Perception
 from playground.world.config import WorldConfig
@@ -228,7 +218,7 @@ def _probe_problems(level: Level, world: World) -> Iterator[Problem]:
         max(bb.top for bb in boxes) - min(bb.bottom for bb in boxes),
     )
     for i, actor in enumerate(level.actors):
-        length = _controller_config(actor.controller).probe_length
+        length = controller_config(actor.controller).probe_length
         if length > size:
             yield Problem(
                 f"actors.{i}.controller.probe_length",
@@ -413,7 +403,7 @@ def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
         world,
         actor.name,
         actor.position,
-        config=_controller_config(actor.controller),
+        config=controller_config(actor.controller),
         source=source,
         angle=actor.angle,
     )

@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from playground.level import Level
+from playground.level.document import Level
 
 __all__ = [
     "FRAME",
@@ -148,7 +148,8 @@ def _fmt(v: float | bool) -> str:
 
 
 def _level(name: str) -> Level:
-    from playground.level import find, load
+    from playground.level.files import find
+    from playground.level.loading import load
 
     return load(find(name))
 

@@ -252,7 +252,8 @@ def _stage_medians(world: World, steps: int) -> dict[str, float]:
 
 def level_row(name: str, repeats: int = REPEATS) -> LevelRow:
     """Time the shipped level ``name`` against its engine (see the module docstring)."""
-    from playground.level import find, load
+    from playground.level.files import find
+    from playground.level.loading import load
     from playground.scene import build
 
     scene = build(load(find(name)))
@@ -588,7 +589,7 @@ def measure(
 
     ``progress`` shows a bar on stderr when it is a terminal (tqdm).
     """
-    from playground.level import shipped
+    from playground.level.files import shipped
 
     names = sorted(shipped()) if levels is None else list(levels)
     jobs: list[Callable[[], LevelRow | PileRow]] = [

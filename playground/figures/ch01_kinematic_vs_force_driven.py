@@ -36,7 +36,8 @@ def platform_run(acceleration: float = 1.0, feed_forward: bool = True) -> Array:
 
 
 def _platform_run(acceleration: float) -> Array:
-    from playground.level import find, load
+    from playground.level.files import find
+    from playground.level.loading import load
     from playground.scene import build
 
     level = load(find("moving_platform"))

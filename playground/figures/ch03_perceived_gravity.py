@@ -12,9 +12,10 @@ import numpy as np
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import Array, level_scene, record, shipped_level
-from playground.level import Level, RotatingGravity, Turn
-from playground.level import Ring as RingShape
-from playground.level import Spin as SpinPath
+from playground.level.document import Level
+from playground.level.gravity import RotatingGravity, Turn
+from playground.level.paths import Spin as SpinPath
+from playground.level.shapes import Ring as RingShape
 from playground.world.world import World
 
 

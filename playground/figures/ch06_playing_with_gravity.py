@@ -15,8 +15,8 @@ from playground.figures.ch01_kinematic_vs_force_driven import ch1_budget_accel
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import Array, G, level_scene, record, shipped_level
-from playground.level import Box as BoxShape
-from playground.level import Waypoints as WaypointsPath
+from playground.level.paths import Waypoints as WaypointsPath
+from playground.level.shapes import Box as BoxShape
 from playground.world.world import World
 
 

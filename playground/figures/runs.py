@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from playground.level import Level
+from playground.level.document import Level
 from playground.scene import Scene
 from playground.world.world import World
 
@@ -30,7 +30,8 @@ def shipped_level(name: str) -> Level:
     >>> shipped_level("bounce").settings.seconds > 0.0
     True
     """
-    from playground.level import find, load
+    from playground.level.files import find
+    from playground.level.loading import load
 
     return load(find(name))
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from playground.level import SEED_SEQUENCES
+from playground.level.files import SEED_SEQUENCES
 from playground.view.app import HEADLESS_FRAME, App
 from playground.view.capture import GifWriter
 from playground.view.launcher import init_headless, show_level
@@ -29,7 +29,8 @@ OUT = Path("docs/img/gifs")
 
 def make_gif(level: str, path: Path, size: tuple[int, int] = SIZE) -> Path:
     """Write ``level``'s scripted run as an animated GIF to ``path``; returns it."""
-    from playground.level import find, load
+    from playground.level.files import find
+    from playground.level.loading import load
 
     seconds = load(find(level)).settings.seconds
     init_headless()

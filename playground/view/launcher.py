@@ -42,7 +42,7 @@ def init_headless() -> None:
 
 def level_names() -> list[str]:
     """The shipped levels, by name, in the order next/previous cycles through them."""
-    from playground.level import shipped
+    from playground.level.files import shipped
 
     return sorted(shipped())
 
@@ -71,7 +71,8 @@ def show_scene(name: str, scene: Any) -> Show:
 
 def show_level(level: str) -> Show:
     """Load and build a level (a path or a shipped name) for the view."""
-    from playground.level import find, load
+    from playground.level.files import find
+    from playground.level.loading import load
     from playground.scene import build
 
     path = find(level)
@@ -114,7 +115,7 @@ def play(
     ``replay_out`` if given.
     """
     from playground.guard import RunawayError
-    from playground.level import LevelError
+    from playground.level.errors import LevelError
 
     try:
         shot = picture_path(screenshot) if screenshot is not None else None

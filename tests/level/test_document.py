@@ -17,8 +17,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from pydantic import ValidationError
 
+from playground.cli import schema_text
 from playground.level import Level, LevelError, loads, schema, shipped, validate
 
+LEVELS = Path(__file__).resolve().parents[2] / "levels"
 BASE = 'title = "x"\ndescription = "y"\n'
 CRATE = (
     '[[props]]\nname = "crate"\nposition = [0, 1]\nmass = {mass}\n'
@@ -196,3 +198,9 @@ def test_every_shipped_level_names_its_schema_for_editors() -> None:
         assert first == "#:schema ./level.schema.json", name
         assert (Path(path).parent / "level.schema.json").is_file()
     assert schema()["$id"].endswith("/level.schema.json")
+
+
+def test_committed_schema_is_up_to_date() -> None:
+    """levels/level.schema.json is what the models export (run `playground schema -o ...`)."""
+    committed = (LEVELS / "level.schema.json").read_text(encoding="utf-8")
+    assert json.loads(committed) == json.loads(schema_text())

@@ -1,0 +1,113 @@
+"""What happens during a run: scripted inputs of the actors and timed events."""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Literal
+
+from pydantic import Field, Strict, field_validator
+
+from playground import limits
+from playground.level.bodies import Prop
+from playground.level.values import Finite, Gravity_, Name, NonNegative, Table, Unit, Vec
+
+
+class Input(Table):
+    """From time ``t`` (s) on, ``actor`` holds this intent (until its next input)."""
+
+    t: NonNegative
+    actor: Name = "player"
+    move: Unit = 0.0
+    jump: bool = False
+    grab: bool = False
+    push: bool = False
+    climb: Unit = 0.0
+    gravity: Vec | None = Field(default=None, description="Own gravity direction (any length).")
+    restore_gravity: bool = False
+    nullify: Name | None = Field(default=None, description="Body whose gravity to nullify.")
+
+    @field_validator("gravity")
+    @classmethod
+    def _direction(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
+        if v is not None and v == (0.0, 0.0):
+            raise ValueError("expected a non-zero direction")
+        return v
+
+
+Impulse_ = Annotated[
+    float, Field(ge=-limits.MAX_IMPULSE, le=limits.MAX_IMPULSE, allow_inf_nan=False)
+]
+"""N·s: spread over one step of the smallest dt it stays within MAX_FORCE."""
+
+
+class _Event(Table):
+    t: NonNegative = Field(description="When, s.")
+
+
+class SetGravity(_Event):
+    """Replace the field with uniform gravity ``g`` (m/s²)."""
+
+    kind: Literal["set_gravity"]
+    g: Annotated[tuple[Gravity_, Gravity_], Strict(False)]
+
+
+class FlipGravity(_Event):
+    """Turn a uniform field by ``angle`` rad (π: a flip), instantly."""
+
+    kind: Literal["flip_gravity"]
+    angle: Finite = math.pi
+
+
+class Nullify(_Event):
+    """Zero one body's gravity."""
+
+    kind: Literal["nullify"]
+    body: Name
+
+
+class RestoreGravity(_Event):
+    """Give a body the field's gravity back."""
+
+    kind: Literal["restore_gravity"]
+    body: Name
+
+
+class BodyGravity(_Event):
+    """Give a body its own gravity: ``scale`` × the field, along ``direction`` if given."""
+
+    kind: Literal["body_gravity"]
+    body: Name
+    scale: Annotated[
+        float,
+        Field(ge=-limits.MAX_GRAVITY_SCALE, le=limits.MAX_GRAVITY_SCALE, allow_inf_nan=False),
+    ] = 1.0
+    direction: Vec | None = None
+
+
+class Impulse(_Event):
+    """A one-step impulse (N·s) on a body, at a world point (m) or its centre."""
+
+    kind: Literal["impulse"]
+    body: Name
+    impulse: Annotated[tuple[Impulse_, Impulse_], Strict(False)]
+    point: Vec | None = None
+
+
+class Spawn(_Event):
+    """Add a prop."""
+
+    kind: Literal["spawn"]
+    prop: Prop
+
+
+class Remove(_Event):
+    """Remove a body."""
+
+    kind: Literal["remove"]
+    body: Name
+
+
+Event = Annotated[
+    SetGravity | FlipGravity | Nullify | RestoreGravity | BodyGravity | Impulse | Spawn | Remove,
+    Field(discriminator="kind"),
+]
