@@ -39,7 +39,7 @@ from playground.controller import hover_spring
 from playground.forces import Category
 
 if TYPE_CHECKING:
-    from playground.world import World
+    from playground.world.world import World
 
 __all__ = ["G0", "Grab", "MouseSpring", "Pull"]
 

@@ -36,7 +36,8 @@ import tomli_w
 
 from playground.intents import Intent
 from playground.mouse import Grab, MouseSpring
-from playground.world import Stage, World
+from playground.world.schedule import Stage
+from playground.world.world import World
 
 if TYPE_CHECKING:
     from playground.scene import Scene

@@ -3,6 +3,9 @@ a folder's TOML files only where the project opts in or the file declares itself
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import pytest
 
 from playground.level import find, load
@@ -68,3 +71,26 @@ def test_a_file_that_declares_itself_a_level_is_collected(pytester: pytest.Pytes
     (folder / "config.toml").write_text(NOT_A_LEVEL, encoding="utf-8")
     result = pytester.runpytest("-p", "no:cacheprovider")
     result.assert_outcomes(passed=_checks())
+
+
+def test_plugin_collects_one_item_per_expectation() -> None:
+    """`pytest levels/x.toml` collects one test per expectation of the level."""
+    path = find("rest")
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "--collect-only",
+            "-q",
+            "-p",
+            "no:cacheprovider",
+            str(path),
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
+        cwd=path.parent,
+    ).stdout
+    items = [line for line in out.splitlines() if "::" in line]
+    assert len(items) == len(load(path).expect)

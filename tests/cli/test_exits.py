@@ -172,7 +172,7 @@ def test_ctrl_c_inside_a_pymunk_callback_is_not_lost(capfd: pytest.CaptureFixtur
     the command still stops, and no cffi traceback is printed."""
     import pymunk
 
-    from playground.cli import _interruptible
+    from playground.cli.exits import _interruptible
 
     space = pymunk.Space()
     space.gravity = (0.0, -9.81)

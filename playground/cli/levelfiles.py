@@ -1,0 +1,89 @@
+"""The commands on level files: ``list`` the shipped levels, ``check`` files, print the ``schema``.
+
+>>> from playground.cli import main
+>>> main(["check", "incline"])
+ok      incline: Incline
+0
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from playground._preflight import writable
+from playground.cli.exits import EXIT_FAILED, EXIT_OK
+from playground.level.document import schema
+from playground.level.errors import LevelError
+from playground.level.files import find, shipped
+from playground.level.loading import load
+
+__all__ = [
+    "cmd_check",
+    "cmd_list",
+    "cmd_schema",
+    "configure_check",
+    "configure_list",
+    "configure_schema",
+    "schema_text",
+]
+
+
+def cmd_list(args: argparse.Namespace) -> int:
+    """Print the shipped levels with their titles."""
+    levels = shipped()
+    width = max((len(n) for n in levels), default=0)
+    for name, path in levels.items():
+        try:
+            title = load(path).title
+        except LevelError as exc:
+            title = f"(invalid: {len(exc.problems)} problem(s); run playground check)"
+        print(f"{name:<{width}}  {title}")
+    return EXIT_OK
+
+
+def cmd_check(args: argparse.Namespace) -> int:
+    """Validate level files; print every problem; exit 1 if any file has one."""
+    failed = False
+    for item in args.files:
+        try:
+            path = find(item)
+            level = load(path)
+            print(f"ok      {item}: {level.title}")
+        except LevelError as exc:
+            failed = True
+            where = f" (line {exc.line}, column {exc.column})" if exc.line is not None else ""
+            print(f"FAILED  {exc.source}{where}: {len(exc.problems)} problem(s)", file=sys.stderr)
+            for problem in exc.problems:
+                print(f"  {problem}", file=sys.stderr)
+    return EXIT_FAILED if failed else EXIT_OK
+
+
+def cmd_schema(args: argparse.Namespace) -> int:
+    """Print the level JSON Schema, or write it to --output."""
+    text = schema_text()
+    if args.output is None:
+        sys.stdout.write(text)
+    else:
+        writable("--output", args.output).write_text(text, encoding="utf-8")
+    return EXIT_OK
+
+
+def schema_text() -> str:
+    """The JSON Schema as the committed ``levels/level.schema.json`` holds it."""
+    return json.dumps(schema(), indent=2, ensure_ascii=False) + "\n"
+
+
+def configure_list(p: argparse.ArgumentParser) -> None:
+    p.set_defaults(func=cmd_list)
+
+
+def configure_check(p: argparse.ArgumentParser) -> None:
+    p.add_argument("files", nargs="+", metavar="FILE", help="level files or shipped names")
+    p.set_defaults(func=cmd_check)
+
+
+def configure_schema(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")
+    p.set_defaults(func=cmd_schema)
