@@ -25,7 +25,6 @@ True
 from __future__ import annotations
 
 import bisect
-import dataclasses
 import json
 import math
 from dataclasses import dataclass, field
@@ -33,8 +32,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import tomli_w
+from pydantic import ValidationError
 
 from playground.intents import Intent
+from playground.level.explain import problems
+from playground.level.timeline import IntentTable
 from playground.mouse import Grab, MouseSpring
 from playground.world.schedule import Stage
 from playground.world.world import World
@@ -61,33 +63,23 @@ class ReplayError(ValueError):
 
 
 def intent_to_dict(intent: Intent) -> dict[str, Any]:
-    """The fields of ``intent`` that differ from the defaults (JSON-ready: tuples become lists).
+    """The fields of ``intent`` that differ from the defaults, as a level's ``[[inputs]]`` table
+    holds them (:class:`~playground.level.timeline.IntentTable`; JSON-ready: lists, not tuples).
 
     >>> intent_to_dict(Intent(move=-1.0, jump=True))
     {'move': -1.0, 'jump': True}
     """
-    default = Intent()
-    out: dict[str, Any] = {}
-    for f in dataclasses.fields(Intent):
-        value = getattr(intent, f.name)
-        if value != getattr(default, f.name):
-            out[f.name] = list(value) if isinstance(value, tuple) else value
-    return out
+    return IntentTable.of(intent).table()
 
 
 def intent_from_dict(data: dict[str, Any], where: str = "intent") -> Intent:
-    """Rebuild an intent from :func:`intent_to_dict`'s output; unknown keys are an error."""
-    names = {f.name for f in dataclasses.fields(Intent)}
-    unknown = sorted(set(data) - names)
-    if unknown:
-        raise ReplayError(
-            f"{where}: unknown intent field(s) {unknown}; expected some of {sorted(names)}"
-        )
-    kwargs: dict[str, Any] = {k: tuple(v) if isinstance(v, list) else v for k, v in data.items()}
+    """Rebuild an intent from :func:`intent_to_dict`'s output, validated as a level's input is
+    (strict: no ``1`` for ``true``); a problem names ``where``, the key and what was expected."""
     try:
-        return Intent(**kwargs)
-    except (TypeError, ValueError) as exc:
-        raise ReplayError(f"{where}: {exc}") from None
+        return IntentTable.model_validate(data).intent()
+    except ValidationError as exc:
+        found = "; ".join(str(p) for p in problems(exc, IntentTable))
+        raise ReplayError(f"{where}: {found}") from None
 
 
 @dataclass(frozen=True, slots=True)

@@ -386,16 +386,13 @@ def make_prop(world: World, model: Prop) -> pymunk.Body:
 
 def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
     from playground.controller import Controller
-    from playground.intents import Intent, Patrol, Script
+    from playground.intents import Patrol, Script
 
     source: Any = None
     timeline = [inp for inp in level.inputs if inp.actor == actor.name]
     if timeline:
         source = Script(
-            timeline=tuple(
-                (inp.t, Intent(**inp.model_dump(exclude={"t", "actor"})))
-                for inp in sorted(timeline, key=lambda i: i.t)
-            )
+            timeline=tuple((inp.t, inp.intent()) for inp in sorted(timeline, key=lambda i: i.t))
         )
     elif actor.patrol is not None:
         source = Patrol(speed=actor.patrol.speed, period=actor.patrol.period)

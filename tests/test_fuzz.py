@@ -11,7 +11,6 @@ Every failing example found is kept under ``tests/regressions/`` and run by
 from __future__ import annotations
 
 import copy
-import json
 import math
 import signal
 import tomllib
@@ -21,6 +20,7 @@ from types import FrameType
 from typing import Any
 
 import pytest
+import tomli_w
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -332,27 +332,6 @@ def test_regression_files(path: Path) -> None:
 # -- playing accepted mutants ----------------------------------------------------------------------
 
 
-def _toml_value(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        return (
-            "nan" if math.isnan(v) else ("inf" if v > 0 else "-inf") if math.isinf(v) else repr(v)
-        )
-    if isinstance(v, str):
-        return json.dumps(v, ensure_ascii=False)
-    if isinstance(v, list):
-        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
-    return "{" + ", ".join(f"{json.dumps(str(k))} = {_toml_value(x)}" for k, x in v.items()) + "}"
-
-
-def to_toml(doc: dict[str, Any]) -> str:
-    """A parsed document as TOML text (every table inline: enough to round-trip a mutant)."""
-    return "".join(f"{json.dumps(str(k))} = {_toml_value(v)}\n" for k, v in doc.items())
-
-
 PLAY_SAMPLE = 20
 """Accepted mutants played headless in CI."""
 
@@ -394,7 +373,7 @@ def test_accepted_mutants_play_headless(tmp_path: Path) -> None:
     try:
         for i, doc in enumerate(sample):
             path = tmp_path / f"mutant{i}.toml"
-            path.write_text(to_toml(doc), encoding="utf-8")
+            path.write_text(tomli_w.dumps(doc), encoding="utf-8")
             signal.setitimer(signal.ITIMER_REAL, PLAY_TIMEOUT)
             try:
                 code = play(str(path), headless=True, frames=PLAY_FRAMES)

@@ -16,7 +16,7 @@ import pytest
 import tomli_w
 
 from playground.intents import Intent
-from playground.level import find, load, loads
+from playground.level import LevelError, find, load, loads
 from playground.mouse import Grab
 from playground.replay import Playback, Replay, ReplayError
 from playground.scene import Scene, build
@@ -204,3 +204,42 @@ def test_bad_grabs_in_a_replay_say_what_is_wrong(grabs: str, expected: str) -> N
     )
     with pytest.raises(ReplayError, match=re.escape(expected)):
         Replay.from_json(text)
+
+
+@pytest.mark.parametrize(
+    "table",
+    [
+        {"move": 2.0},
+        {"jump": 1},
+        {"gravity": [0.0, 0.0]},
+        {"climb": "up"},
+        {"nullify": "no body!"},
+        {"mvoe": 1.0},
+    ],
+)
+def test_a_replay_and_a_level_refuse_a_bad_intent_alike(table: dict[str, object]) -> None:
+    """Law: one model validates an intent wherever it is written: a replay's change and a
+    level's ``[[inputs]]`` table with the same bad key get the same problem (the replay's names
+    its file and entry, the level's its key path)."""
+    change = json.dumps([0, table])
+    text = (
+        '{"format": "playground-replay", "version": 1, "level": "rest", "dt": 0.01, '
+        f'"steps": 3, "changes": [{change}]}}'
+    )
+    with pytest.raises(ReplayError) as replay_error:
+        Replay.from_json(text, where="mine.json")
+    doc = {"title": "x", "description": "y", "inputs": [{"t": 0.0, **table}]}
+    with pytest.raises(LevelError) as level_error:
+        loads(tomli_w.dumps(doc), "mine.toml")
+    (problem,) = level_error.value.problems
+    key = str(problem).removeprefix("inputs.0.")
+    assert str(replay_error.value) == f"mine.json: changes[0]: {key}"
+
+
+def test_intents_keep_their_serialised_form() -> None:
+    """A replay written today holds the same change entries a replay of version 1 held: only the
+    keys that differ from the defaults, in the intent's order, vectors as lists."""
+    replay = Replay("rest", 0.01, 2, ((0, Intent(gravity=(0.0, -1.0), move=0.5, nullify="crate")),))
+    (entry,) = json.loads(replay.to_json())["changes"]
+    assert entry == [0, {"move": 0.5, "gravity": [0.0, -1.0], "nullify": "crate"}]
+    assert list(entry[1]) == ["move", "gravity", "nullify"]

@@ -24,7 +24,9 @@ def _unwrap(tp: Any) -> list[Any]:
     return [tp]
 
 
-def walk(loc: Sequence[int | str]) -> tuple[set[int], type[BaseModel] | None]:
+def walk(
+    loc: Sequence[int | str], root: type[BaseModel] = Level
+) -> tuple[set[int], type[BaseModel] | None]:
     """Follow a pydantic error location through the models.
 
     Returns the positions of the discriminator tags pydantic put in the location (a key path has
@@ -32,7 +34,7 @@ def walk(loc: Sequence[int | str]) -> tuple[set[int], type[BaseModel] | None]:
     model whose table sits at the end of it, if any.
     """
     tags: set[int] = set()
-    current: list[Any] = [Level]
+    current: list[Any] = [root]
     for position, key in enumerate(loc):
         nxt: list[Any] = []
         for tp in current:
@@ -87,11 +89,12 @@ _TYPE_WORDS = {
 }
 
 
-def problems(exc: ValidationError) -> list[Problem]:
+def problems(exc: ValidationError, root: type[BaseModel] = Level) -> list[Problem]:
+    """Each error of ``exc`` as a problem: its key path in ``root`` and what was expected."""
     out: list[Problem] = []
     for err in exc.errors(include_url=False):
         loc = tuple(err["loc"])
-        tags, model = walk(loc[:-1])
+        tags, model = walk(loc[:-1], root)
         kind = err["type"]
         if kind == "extra_forbidden":
             key = str(loc[-1])

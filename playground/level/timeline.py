@@ -3,20 +3,27 @@
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, Strict, field_validator
 
 from playground import limits
+from playground.intents import Intent
 from playground.level.bodies import Prop
 from playground.level.values import Finite, Gravity_, Name, NonNegative, Table, Unit, Vec
 
 
-class Input(Table):
-    """From time ``t`` (s) on, ``actor`` holds this intent (until its next input)."""
+class IntentTable(Table):
+    """One intent, as a level's ``[[inputs]]`` table and a replay's change both write it: the
+    fields of :class:`playground.intents.Intent` (a replay leaves out those at their default).
 
-    t: NonNegative
-    actor: Name = "player"
+    >>> from playground.intents import Intent
+    >>> IntentTable.of(Intent(move=-1.0, gravity=(0.0, 1.0))).table()
+    {'move': -1.0, 'gravity': [0.0, 1.0]}
+    >>> IntentTable.model_validate({"jump": True}).intent() == Intent(jump=True)
+    True
+    """
+
     move: Unit = 0.0
     jump: bool = False
     grab: bool = False
@@ -32,6 +39,31 @@ class Input(Table):
         if v is not None and v == (0.0, 0.0):
             raise ValueError("expected a non-zero direction")
         return v
+
+    @classmethod
+    def of(cls, intent: Intent) -> IntentTable:
+        """The table of a core intent (validated: what a level could not hold is refused)."""
+        return cls.model_validate({name: getattr(intent, name) for name in _INTENT_KEYS})
+
+    def intent(self) -> Intent:
+        """The core intent these keys describe."""
+        return Intent(**{name: getattr(self, name) for name in _INTENT_KEYS})
+
+    def table(self) -> dict[str, Any]:
+        """The keys that differ from the defaults, as JSON and TOML write them (lists, not
+        tuples)."""
+        return self.model_dump(mode="json", include=set(_INTENT_KEYS), exclude_defaults=True)
+
+
+_INTENT_KEYS = tuple(IntentTable.model_fields)
+"""The intent's keys, in order (an input adds its time and actor to them)."""
+
+
+class Input(IntentTable):
+    """From time ``t`` (s) on, ``actor`` holds this intent (until its next input)."""
+
+    t: NonNegative
+    actor: Name = "player"
 
 
 Impulse_ = Annotated[
