@@ -5,7 +5,9 @@ The distribution is ``pymunk-playground``; the package and the command are ``pla
 """
 
 from playground.controller import Controller, ControllerConfig, ControllerForces, GroundHit, State
-from playground.forces import BodyForces, Category, ForceLedger, ForceSolver
+from playground.forces.ledger import Category, ForceLedger
+from playground.forces.readings import BodyForces
+from playground.forces.solver import ForceSolver
 from playground.gravity import (
     GravityField,
     GravityRule,

@@ -16,7 +16,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from playground._validate import positive
-from playground.filters import FilterChain, Median3, OneEuroFilter
+from playground.filters.chain import FilterChain
+from playground.filters.median import Median3
+from playground.filters.one_euro import OneEuroFilter
 
 __all__ = ["PerceivedGravity", "Perception"]
 

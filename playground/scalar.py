@@ -2,11 +2,12 @@
 
 Every numpy call costs about 1 µs and every ``pymunk.batch`` call about 5 µs whatever the body
 count, so below :data:`SCALAR_MAX_BODIES` tracked bodies the vectorised
-:class:`~playground.forces.ForceSolver` and :class:`~playground.perception.PerceivedGravity` cost
-more than the physics. This path reads each tracked body's attributes, does the same arithmetic
-in the same order in Python floats and filters with the same 1€ (and median-of-3) equations, so
-both paths give the same readings (to a unit in the last place: magnitudes come from
-``math.hypot`` here and from numpy's complex ``abs`` there).
+:class:`~playground.forces.solver.ForceSolver` and
+:class:`~playground.perception.PerceivedGravity` cost more than the physics. This path reads each
+tracked body's attributes, does the same arithmetic in the same order in Python floats and
+filters with the same 1€ (and median-of-3) equations, so both paths give the same readings (to a
+unit in the last place: magnitudes come from ``math.hypot`` here and from numpy's complex ``abs``
+there).
 
 The world switches between the paths at a plan change; the state moves with it
 (:meth:`ScalarPath.load` and :meth:`ScalarPath.store`), so a run gives one answer whichever path
@@ -21,8 +22,12 @@ from collections.abc import Callable
 import numpy as np
 import pymunk
 
-from playground.filters import FilterChain, Median3, OneEuroFilter
-from playground.forces import BodyForces, ForceLedger, ForceSolver
+from playground.filters.chain import FilterChain
+from playground.filters.median import Median3
+from playground.filters.one_euro import OneEuroFilter
+from playground.forces.ledger import ForceLedger
+from playground.forces.readings import BodyForces
+from playground.forces.solver import ForceSolver
 from playground.perception import PerceivedGravity
 
 __all__ = ["SCALAR_MAX_BODIES", "ScalarPath"]

@@ -18,7 +18,7 @@ NOTES = ROOT / "docs" / "design.md"
 STAGE_ROW = re.compile(r"^\| (\d) `(\w+)` \|[^|]*\| (.*) \|$", re.MULTILINE)
 CITED_NOTE = re.compile(r"\b([A-Z][A-Z_]*\.md)\b")
 """An upper-case markdown file name cited in a text (a note such as the README)."""
-MODULE = re.compile(r"`((?:view/)?_?\w+\.py)`|`(view/)`")
+MODULE = re.compile(r"`((?:\w+/)*_?\w+\.py)`|`(\w+/)`")
 
 
 def stage_rows() -> dict[str, str]:

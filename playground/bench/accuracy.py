@@ -39,13 +39,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from playground.bench.scenes import SCENES, Knobs, Scene, build
-from playground.filters import (
-    ExponentialMovingAverage,
-    Filter,
-    FilterChain,
-    Median3,
-    OneEuroFilter,
-)
+from playground.filters.chain import FilterChain
+from playground.filters.median import Median3
+from playground.filters.one_euro import ExponentialMovingAverage, OneEuroFilter
+from playground.filters.row_filter import Filter
 from playground.gravity import STANDARD_GRAVITY
 
 __all__ = [

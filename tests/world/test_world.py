@@ -25,7 +25,7 @@ from playground import (
 G = 9.81
 
 TOL_SETTLED_REL = 1e-6
-"""A settled contact's support matches m·g to < 1e-6 once at rest (see tests/test_forces.py)."""
+"""A settled contact's support matches m·g to < 1e-6 once at rest (tests/forces/test_solver.py)."""
 
 TOL_PERCEIVED_REL = 1e-3
 """Perceived gravity is 1€-filtered (min cutoff 2 Hz, time constant 80 ms): after 1.5 s at rest

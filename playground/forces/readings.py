@@ -1,0 +1,46 @@
+"""One tracked body's force readings after a step, as plain values (:class:`BodyForces`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["BodyForces"]
+
+Vec = tuple[float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class BodyForces:
+    """One tracked body's readings after a step (plain values, SI).
+
+    Attributes:
+        valid: False when the body was not integrated through the whole step (asleep after one of
+            its substeps, or absent from the space); the other fields then hold the last valid
+            reading.
+        engine: force the engine applied (contacts + joints), N.
+        engine_torque: torque the engine applied, N·m.
+        support: engine + our SUPPORT forces (hover, drive, grip), N.
+        specific: support / m — what an accelerometer on the body reads, m/s².
+        passive: gravity and fields on the body, N.
+        applied: our APPLIED forces (self-propulsion, scripts), N.
+        contact: sum of the body's arbiter impulses / dt, N (NaN unless ``split_valid``).
+        contact_normal / contact_friction: the contact force's normal and tangential parts, N.
+        constraint: engine − contact: what joints did, N (NaN unless ``split_valid``).
+        split_valid: the contact split is on and known this step. It is unknown (the four
+            fields above NaN) on a step where one of the body's arbiters reports an impulse the
+            engine did not apply (see
+            :class:`~playground.forces.contact_split.ContactSplit`).
+    """
+
+    valid: bool
+    engine: Vec
+    engine_torque: float
+    support: Vec
+    specific: Vec
+    passive: Vec
+    applied: Vec
+    contact: Vec
+    contact_normal: Vec
+    contact_friction: Vec
+    constraint: Vec
+    split_valid: bool

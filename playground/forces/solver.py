@@ -1,0 +1,343 @@
+"""The reverse-integration force solver: what the engine did to each tracked body in a step.
+
+pymunk integrates each dynamic body's velocity as ``v ← v·d + (g + F/m)·h`` (``d = damping**h``)
+and then solves contacts and joints by impulses. Knowing v before and after the step, the mass,
+gravity and every force we applied, the impulse the engine applied is what is left over::
+
+    J = m·(v₁ − d·v₀) − (m·g + F)·h          L = I·(ω₁ − d·ω₀) − T·h
+
+and the **engine force** is J/dt. Summed over substeps, read for every tracked body at once with
+``pymunk.batch`` and numpy. The ledger's categories (:mod:`playground.forces.ledger`) then give the
+support, specific, passive and applied forces; the contact split
+(:mod:`playground.forces.contact_split`) tells contacts from joints.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pymunk
+from numpy.typing import NDArray
+
+from playground.forces.contact_split import ContactSplit
+from playground.forces.ledger import ForceLedger
+from playground.forces.readings import BodyForces
+from playground.forces.tracking import TrackedRows
+
+__all__ = ["ForceSolver"]
+
+Vec = tuple[float, float]
+
+
+def _vec(a: NDArray[np.float64]) -> Vec:
+    return (float(a[0]), float(a[1]))
+
+
+_READINGS = ("_engine3", "_support3", "_specific2", "_passive3", "_applied3")
+
+
+class ForceSolver(TrackedRows):
+    """Engine forces of tracked dynamic bodies by reverse integration, vectorised over all.
+
+    Per step the world calls :meth:`before_step` (reads v₀, ω₀ and the forces about to be
+    integrated, straight from the engine), :meth:`after_substep` after each ``space.step`` and
+    :meth:`finish`. Reading v₀ just before the step means every step — even the first after a body
+    is added — has a reading; a body absent from either read, or asleep after any substep (not
+    integrated in it), gets none and keeps its last values (``valid`` False).
+
+    Results are arrays with one row per tracked body, in :attr:`bodies` order.
+
+    With ``contact_split`` on, the engine force is split into what contacts did (the body's
+    arbiter impulses, summed by :class:`~playground.forces.contact_split.ContactSplit`) and what
+    joints did (the rest). A step whose arbiter impulses cannot be trusted gets NaN with
+    ``split_valid`` False — never a wrong number.
+    """
+
+    def __init__(self, *, contact_split: bool = False, check_sleep: bool = False) -> None:
+        self.contact_split = contact_split
+        self.check_sleep = check_sleep
+        super().__init__()
+        self.mass = np.zeros(0)
+        self.moment = np.zeros(0)
+        n = 0
+        self.valid = np.zeros(n, dtype=bool)
+        # Readings in (N, 3) [x, y, angle] frames: whole contiguous arrays are an order of
+        # magnitude cheaper for numpy than (N, 2) slices of them. The public (N, 2) arrays are
+        # views (properties below).
+        self._engine3 = np.zeros((n, 3))
+        self._support3 = np.zeros((n, 3))
+        self._specific2 = np.zeros((n, 2))
+        self._passive3 = np.zeros((n, 3))
+        self._applied3 = np.zeros((n, 3))
+        self._split = ContactSplit()
+        self._rebuild_keys()
+
+    # -- membership (see TrackedRows) --------------------------------------------------------
+
+    def _row_added(self) -> None:
+        for name in _READINGS:
+            old = getattr(self, name)
+            setattr(self, name, np.vstack([old, np.zeros((1, old.shape[1]))]))
+        self.valid = np.append(self.valid, False)
+        self._split.add_row()
+
+    def _row_removed(self, row: int) -> None:
+        for name in (*_READINGS, "valid"):
+            setattr(self, name, np.delete(getattr(self, name), row, axis=0))
+        self._split.remove_row(row)
+
+    def refresh_masses(self) -> None:
+        """Re-read mass (kg) and moment (kg·m²) of every tracked body (after a mass change)."""
+        self.mass = np.array([b.mass for b in self.bodies], dtype=np.float64)
+        self.moment = np.array([b.moment for b in self.bodies], dtype=np.float64)
+        self._locked = np.isinf(self.moment)
+        # [m, m, I] per row, I = 0 where rotation is locked (I = ∞: no torque reading).
+        self._m3 = np.column_stack([self.mass, self.mass, np.where(self._locked, 0.0, self.moment)])
+        self._any_locked = bool(self._locked.any())
+        self._inv_m2 = np.column_stack([1.0 / self.mass, 1.0 / self.mass])
+        self._scaled: tuple[float, NDArray[np.float64]] | None = None
+        self._weight: tuple[Vec, NDArray[np.float64]] | None = None
+
+    def _rebuild_keys(self) -> None:
+        """Sorted ids, masses and per-step arrays after the tracked set changed (lazily)."""
+        super()._rebuild_keys()
+        self.refresh_masses()
+        n = len(self.bodies)
+        self._vsum = np.zeros((n, 3))
+        self._seen = np.zeros(n, dtype=bool)
+        self._split.reset(self._keys, self._key_row)
+
+    # -- per step -------------------------------------------------------------------------------
+
+    def before_step(
+        self,
+        ids: NDArray[np.uintp],
+        state: NDArray[np.float64],
+        field: NDArray[np.float64] | None = None,
+    ) -> None:
+        """Take v₀, ω₀ and the forces about to be integrated from a batch read.
+
+        ``state`` columns: vx, vy, w, fx, fy, torque (see ``_batch.BodyRows``); ``field`` rows
+        (N) are the per-body gravity forces included in those forces.
+        """
+        if self._keys_dirty:
+            self._rebuild_keys()
+        n = len(self.bodies)
+        self._substeps_summed = 0
+        if self.contact_split:
+            self._split.begin()
+        order = self._order(ids)
+        if order is not None:
+            # Every tracked body is present (the usual case): one gather into tracked order;
+            # v₀ and F are views of it.
+            sub = np.take(state, order, axis=0)  # take: 3× cheaper than state[order]
+            self._v0 = sub[:, 0:3]
+            self._force = sub[:, 3:6]
+            self._field = None if field is None else np.take(field, order, axis=0)
+            self._seen.fill(True)
+        else:
+            tracked, rows = self._rows(ids)
+            self._v0 = np.zeros((n, 3))
+            self._force = np.zeros((n, 3))
+            self._v0[tracked] = state[rows, 0:3]
+            self._force[tracked] = state[rows, 3:6]
+            self._field = None
+            if field is not None:
+                self._field = np.zeros((n, 2))
+                self._field[tracked] = field[rows]
+            self._seen.fill(False)
+            self._seen[tracked] = True
+        self._vlast = self._v0
+
+    def after_substep(
+        self,
+        space: pymunk.Space,
+        ids: NDArray[np.uintp],
+        vel: NDArray[np.float64],
+        last: bool,
+        *,
+        stamp: int = 0,
+        rescaled: bool = False,
+    ) -> None:
+        """Accumulate one substep: velocities now (``vel`` rows vx, vy, w), contact impulses.
+
+        ``stamp`` counts the space's steps (1 for its first); ``rescaled``: this substep's length
+        differs from the one before it, so Chipmunk rescaled its warm starts.
+        """
+        order = self._order(ids)
+        if order is not None:
+            sub = np.take(vel, order, axis=0)
+        else:
+            tracked, rows = self._rows(ids)
+            present = np.zeros(len(self.bodies), dtype=bool)
+            present[tracked] = True
+            self._seen &= present
+            sub = self._vlast.copy()
+            sub[tracked] = vel[rows]
+        if not last:
+            # Σ v_k over the substeps but the last, for the damping term (see finish()).
+            if self._substeps_summed == 0:
+                self._vsum[:] = sub
+            else:
+                self._vsum += sub
+            self._substeps_summed += 1
+        self._vlast = sub
+        if self.check_sleep:
+            # Asleep after a substep: not integrated in it (a body woken by a contact is
+            # integrated in the substep that wakes it; one asleep for part of the step is not
+            # integrated for the whole step, and its reading would be off by the gravity it
+            # missed).
+            self._seen &= np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
+        if self.contact_split:
+            self._split.accumulate(space, stamp, rescaled)
+
+    def finish(
+        self,
+        *,
+        dt: float,
+        substeps: int,
+        damping: float,
+        space_gravity: Vec,
+        ledger: ForceLedger,
+    ) -> None:
+        """Compute the readings of this step.
+
+        With n substeps of h = dt/n and per-substep velocity damping d = damping**h, summing the
+        per-substep impulses telescopes to
+        ``J = m·(v_n − v_0 + (1 − d)·Σ_{k<n} v_k) − (m·g + F)·dt``; the engine force is J/dt.
+        The arithmetic runs on whole (N, 3) arrays — [x, y, angle] columns with [m, m, I] — so
+        its cost is a dozen numpy calls whatever N is; the ledger's few entries are patched in.
+        """
+        d = damping ** (dt / substeps)
+        dv = self._vlast - self._v0
+        if d != 1.0:
+            dv += (1.0 - d) * (self._v0 + self._vsum if self._substeps_summed else self._v0)
+        force = self._force.copy()  # contiguous from here on
+        weights = self._weights3(space_gravity)
+        # E = m·Δv/dt − F − m·g, columns [x, y, angle]
+        engine = dv
+        engine *= self._m3_over(dt)
+        engine -= force
+        engine -= weights
+        if self._any_locked:
+            engine[self._locked, 2] = 0.0
+        passive = weights.copy()
+        applied = force
+        if self._field is not None:
+            passive[:, 0:2] += self._field
+            applied[:, 0:2] -= self._field
+        support = engine.copy()
+        # The ledger's forces are in F: those of PASSIVE and SUPPORT move out of "applied"; what
+        # remains there is APPLIED plus whatever someone put on the body outside the ledger.
+        row_by_id = self._row_by_id
+        for body_id, p in ledger.items():  # usually far fewer entries than tracked bodies
+            i = row_by_id.get(body_id)
+            if i is not None:
+                passive[i, 0] += p[0]
+                passive[i, 1] += p[1]
+                support[i, 0] += p[4]
+                support[i, 1] += p[5]
+                applied[i, 0] -= p[0] + p[4]
+                applied[i, 1] -= p[1] + p[5]
+        # (N, 2) and contiguous: the filter downstream is its only consumer.
+        specific = np.multiply(support[:, 0:2], self._inv_m2)
+
+        ok = self._seen
+        if not ok.all():
+            # Rows without a reading keep their last values.
+            stale = ~ok
+            for new, old in (
+                (engine, self._engine3),
+                (passive, self._passive3),
+                (applied, self._applied3),
+                (support, self._support3),
+                (specific, self._specific2),
+            ):
+                new[stale] = old[stale]
+        self._engine3, self._passive3, self._applied3 = engine, passive, applied
+        self._support3, self._specific2 = support, specific
+        self.valid = ok.copy()
+        if self.contact_split:
+            self._split.finish(ok, self.engine, dt)
+        elif self._split.valid.any():  # the split was just turned off
+            self._split.forget()
+
+    def _m3_over(self, dt: float) -> NDArray[np.float64]:
+        """[m, m, I] / dt, cached while dt and the masses stay the same."""
+        if self._scaled is None or self._scaled[0] != dt:
+            self._scaled = (dt, self._m3 / dt)
+        return self._scaled[1]
+
+    def _weights3(self, g: Vec) -> NDArray[np.float64]:
+        """[m·gx, m·gy, 0] per row (N), cached while g and the masses stay the same."""
+        if self._weight is None or self._weight[0] != g:
+            self._weight = (g, self.mass[:, None] * np.array([g[0], g[1], 0.0]))
+        return self._weight[1]
+
+    # -- readings, one row per tracked body ------------------------------------------------------
+
+    @property
+    def engine(self) -> NDArray[np.float64]:
+        """Force the engine applied (contacts + joints), N; (N, 2)."""
+        return self._engine3[:, 0:2]
+
+    @property
+    def engine_torque(self) -> NDArray[np.float64]:
+        """Torque the engine applied, N·m; (N,). Zero for rotation-locked bodies."""
+        return self._engine3[:, 2]
+
+    @property
+    def support(self) -> NDArray[np.float64]:
+        """Engine force + our SUPPORT forces, N; (N, 2)."""
+        return self._support3[:, 0:2]
+
+    @property
+    def specific(self) -> NDArray[np.float64]:
+        """Support / m, m/s²; (N, 2)."""
+        return self._specific2
+
+    @property
+    def passive(self) -> NDArray[np.float64]:
+        """Gravity, fields and our PASSIVE forces, N; (N, 2)."""
+        return self._passive3[:, 0:2]
+
+    @property
+    def applied(self) -> NDArray[np.float64]:
+        """Our APPLIED forces and any force put on the body outside the ledger, N; (N, 2)."""
+        return self._applied3[:, 0:2]
+
+    @property
+    def contact(self) -> NDArray[np.float64]:
+        """Σ arbiter impulses / dt, N; (N, 2), NaN unless :attr:`split_valid`."""
+        return self._split.contact
+
+    @property
+    def contact_normal(self) -> NDArray[np.float64]:
+        """The contact force's part along the contact normals, N; (N, 2)."""
+        return self._split.contact_normal
+
+    @property
+    def constraint(self) -> NDArray[np.float64]:
+        """Engine − contact: what joints did, N; (N, 2), NaN unless :attr:`split_valid`."""
+        return self._split.constraint
+
+    @property
+    def split_valid(self) -> NDArray[np.bool_]:
+        """Per row, the contact split is on and known this step; (N,)."""
+        return self._split.valid
+
+    def reading(self, row: int) -> BodyForces:
+        """The readings of one tracked row as plain values."""
+        return BodyForces(
+            valid=bool(self.valid[row]),
+            engine=_vec(self.engine[row]),
+            engine_torque=float(self.engine_torque[row]),
+            support=_vec(self.support[row]),
+            specific=_vec(self.specific[row]),
+            passive=_vec(self.passive[row]),
+            applied=_vec(self.applied[row]),
+            contact=_vec(self.contact[row]),
+            contact_normal=_vec(self.contact_normal[row]),
+            contact_friction=_vec(self.contact[row] - self.contact_normal[row]),
+            constraint=_vec(self.constraint[row]),
+            split_valid=bool(self.split_valid[row]),
+        )

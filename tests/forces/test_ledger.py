@@ -1,0 +1,92 @@
+"""Laws of the force ledger: totals per body, sums per category, torque from the point, flush."""
+
+from __future__ import annotations
+
+import math
+
+import pymunk
+import pytest
+
+from playground.forces.ledger import Category, ForceLedger
+
+
+def body_at(x: float, y: float) -> pymunk.Body:
+    body = pymunk.Body(2.0, 1.0)
+    body.position = (x, y)
+    return body
+
+
+def test_forces_sum_per_body_and_per_category() -> None:
+    """Each body's total is the sum of its forces; each category's sum is kept apart, in the
+    documented order [passive x, y, applied x, y, support x, y]."""
+    a, b = body_at(0.0, 0.0), body_at(5.0, 0.0)
+    ledger = ForceLedger()
+    ledger.add(a, (1.0, 2.0), category=Category.PASSIVE)
+    ledger.add(a, (10.0, 0.0))  # APPLIED by default
+    ledger.add(a, (0.0, -4.0), category=Category.SUPPORT)
+    ledger.add(a, (0.5, 0.5), category=Category.SUPPORT)
+    ledger.add(b, (3.0, 3.0), category=Category.SUPPORT)
+    assert len(ledger) == 2
+    parts = {body_id: p for body_id, p in ledger.items()}
+    assert parts[a.id] == [1.0, 2.0, 10.0, 0.0, 0.5, -3.5]
+    assert parts[b.id] == [0.0, 0.0, 0.0, 0.0, 3.0, 3.0]
+    ledger.flush()
+    assert a.force == (11.5, -1.5)
+    assert b.force == (3.0, 3.0)
+
+
+def test_a_force_off_the_centre_of_gravity_turns_the_body() -> None:
+    """Torque about the centre of gravity is r × F, with r from the body's centre of gravity in
+    the world (not the origin, not the body's position when its centre of gravity is offset);
+    a pure torque adds to it."""
+    body = pymunk.Body(2.0, 1.0)
+    body.center_of_gravity = (0.0, 1.0)
+    body.angle = math.pi / 2
+    body.position = (3.0, 4.0)  # so the centre of gravity is at (3, 4) + (-1, 0) in the world
+    ledger = ForceLedger()
+    ledger.add(body, (0.0, 5.0), point=(4.0, 4.0))  # r = (2, 0): T = 2·5
+    ledger.add_torque(body, -1.5, Category.APPLIED)
+    ledger.flush()
+    assert body.torque == pytest.approx(10.0 - 1.5, abs=1e-12)
+    ledger.clear()
+    ledger.add(body, (7.0, 0.0))  # at the centre of gravity: no torque
+    ledger.flush()
+    assert body.torque == 0.0
+
+
+def test_flush_replaces_what_the_body_had() -> None:
+    """pymunk clears forces after each step; flush writes the ledger's totals, not a sum with
+    whatever the body held."""
+    body = body_at(0.0, 0.0)
+    body.force = (100.0, 100.0)
+    body.torque = 9.0
+    ledger = ForceLedger()
+    ledger.add(body, (1.0, 0.0))
+    ledger.flush()
+    assert (body.force, body.torque) == ((1.0, 0.0), 0.0)
+
+
+def test_on_first_is_called_when_an_empty_ledger_gets_an_entry() -> None:
+    """The world's hook runs once per empty → non-empty change, not per force."""
+    calls: list[int] = []
+    body = body_at(0.0, 0.0)
+    ledger = ForceLedger(on_first=lambda: calls.append(1))
+    ledger.add(body, (1.0, 0.0))
+    ledger.add(body, (1.0, 0.0))
+    ledger.add_torque(body_at(1.0, 0.0), 1.0, Category.SUPPORT)
+    assert len(calls) == 1
+    ledger.clear()
+    ledger.add_torque(body, 1.0, Category.SUPPORT)
+    assert len(calls) == 2
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+def test_non_finite_forces_and_torques_are_refused(bad: float) -> None:
+    """A NaN or infinite force or torque is a ValueError naming the unit, and records nothing."""
+    body = body_at(0.0, 0.0)
+    ledger = ForceLedger()
+    with pytest.raises(ValueError, match="force: expected a finite 2-vector in newtons"):
+        ledger.add(body, (0.0, bad))
+    with pytest.raises(ValueError, match="torque: expected a finite number in N·m"):
+        ledger.add_torque(body, bad, Category.APPLIED)
+    assert len(ledger) == 0
