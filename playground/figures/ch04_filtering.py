@@ -14,13 +14,10 @@ import numpy as np
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, G, level_scene, record
-from playground.filters import (
-    ExponentialMovingAverage,
-    Filter,
-    FilterChain,
-    Median3,
-    OneEuroFilter,
-)
+from playground.filters.chain import FilterChain
+from playground.filters.median import Median3
+from playground.filters.one_euro import ExponentialMovingAverage, OneEuroFilter
+from playground.filters.row_filter import Filter
 
 CH4_FILTERS: dict[str, Callable[[], Filter] | None] = {
     "raw": None,
