@@ -171,3 +171,186 @@ def test_malformed_new_kinds_name_the_key(expect: str, where: str, message: str)
     assert any(p.path == where and message in p.message for p in info.value.problems), str(
         info.value
     )
+
+
+# -- the check kinds, on a body gliding at constant velocity: x(t) = 2 m/s · t ---------------------
+
+GLIDE = """
+title = "Glide"
+description = "A ball glides at 2 m/s with no gravity and nothing to touch."
+[settings]
+seconds = 1.0
+[gravity]
+kind = "uniform"
+g = [0.0, 0.0]
+[[props]]
+name = "ball"
+position = [0.0, 5.0]
+velocity = [2.0, 0.0]
+mass = 1.0
+shapes = [{ kind = "circle", radius = 0.1 }]
+[[props]]
+name = "marker"
+position = [1.0, 2.0]
+mass = 1.0
+shapes = [{ kind = "circle", radius = 0.1 }]
+"""
+
+TOL_GLIDE = 1e-9
+"""m: x = 2 m/s · t summed over 120 steps of 1/120 s rounds at ~1e-15 m."""
+
+
+def _glide(expect: str, seconds: float = 1.0) -> list[tuple[bool, str]]:
+    """Run the glide with these checks for ``seconds`` (less than the level's: cut short)."""
+    scene = build(loads(GLIDE + expect))
+    checks = watch(scene)
+    scene.run(seconds)
+    return [(r.passed, r.detail) for r in checks.results()]
+
+
+def test_at_reads_the_value_at_its_time_and_says_how_far_off() -> None:
+    """x(0.5 s) = 1 m: ``equals = 1`` passes; ``equals = 1.25`` fails off by 0.25 m; a run cut
+    short before the check's time fails saying it never reached it."""
+    hit, miss, late = _glide(
+        f"""
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+t = 0.5
+equals = 1.0
+tolerance = {TOL_GLIDE}
+
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+t = 0.5
+equals = 1.25
+
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+t = 0.9
+equals = 1.8
+""",
+        seconds=0.8,
+    )
+    assert hit[0], hit[1]
+    assert not miss[0] and "off by 0.25 m" in miss[1], miss[1]
+    assert not late[0] and "without reaching it" in late[1], late[1]
+
+
+def test_always_names_the_first_break_and_eventually_the_first_success() -> None:
+    """x < 1.01 m holds until 0.505 s: ``always`` fails first broken at the step after, 61/120 s,
+    where x > 1.01 m first happens; x > 5 m never happens and the failure gives the closest
+    step, the last."""
+    always, eventually, never = _glide(
+        """
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+check = "always"
+below = 1.01
+
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+check = "eventually"
+above = 1.01
+
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+check = "eventually"
+above = 5.0
+"""
+    )
+    assert not always[0] and "first broken at t = 0.5083 s" in always[1], always[1]
+    assert eventually[0] and "first at t = 0.5083 s" in eventually[1], eventually[1]
+    assert not never[0] and "closest at t = 1 s" in never[1], never[1]
+
+
+def test_mean_change_relative_to_and_norm() -> None:
+    """Over [0.5, 1] s the mean of x is 1.5 m; the ball relative to the marker at 1 s is
+    (2, 5) − (1, 2) = (1, 3), of norm √10."""
+    results = _glide(
+        f"""
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+check = "mean"
+window = [0.5, 1.0]
+equals = 1.5
+tolerance = {TOL_GLIDE}
+
+[[expect]]
+body = "ball"
+quantity = "position"
+relative_to = "marker"
+t = 1.0
+equals = [1.0, 3.0]
+tolerance = {TOL_GLIDE}
+
+[[expect]]
+body = "ball"
+quantity = "position"
+relative_to = "marker"
+component = "norm"
+t = 1.0
+equals = {math.sqrt(10.0)}
+tolerance = {TOL_GLIDE}
+"""
+    )
+    assert all(ok for ok, _ in results), results
+
+
+def test_change_is_measured_from_the_windows_first_step() -> None:
+    """``change``: x went from 1 m at 0.5 s to 2 m at 1 s, so the change is 1 m, not 2 m."""
+    (result,) = _glide(
+        f"""
+[[expect]]
+body = "ball"
+quantity = "position"
+component = "x"
+check = "always"
+change = true
+window = [0.5, 1.0]
+below = {1.0 + TOL_GLIDE}
+"""
+    )
+    assert result[0], result[1]
+
+
+def test_a_window_past_the_end_of_the_run_fails() -> None:
+    """``always`` over [0.5, 1] s on a run cut short at 0.8 s: it held while it ran, but the
+    window did not close, so it does not pass."""
+    (result,) = _glide(
+        """
+[[expect]]
+body = "ball"
+quantity = "velocity"
+component = "x"
+check = "always"
+window = [0.5, 1.0]
+above = 1.9
+""",
+        seconds=0.8,
+    )
+    assert not result[0] and "before the window closed" in result[1], result[1]
+
+
+def test_repeated_check_names_are_made_unique() -> None:
+    from playground.expectations import check_names
+
+    level = loads(
+        GLIDE
+        + '[[expect]]\nname = "x"\nbody = "ball"\nquantity = "angle"\nt = 0.5\nequals = 0.0\n'
+        + '[[expect]]\nname = "x"\nbody = "ball"\nquantity = "angle"\nt = 1.0\nequals = 0.0\n'
+    )
+    assert check_names(level) == ["x", "x #2"]
