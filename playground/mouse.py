@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING
 import pymunk
 
 from playground.controller import hover_spring
-from playground.forces import Category
+from playground.forces.ledger import Category
 
 if TYPE_CHECKING:
     from playground.world.world import World

@@ -14,7 +14,8 @@ import math
 import pymunk
 
 from playground._validate import bounded, bounded_vec
-from playground.forces import BodyForces, Category, ForceLedger
+from playground.forces.ledger import Category, ForceLedger
+from playground.forces.readings import BodyForces
 from playground.limits import MAX_COORDINATE, MAX_IMPULSE, RUNAWAY_FORCE
 from playground.world.config import WorldConfig
 from playground.world.physics import PhysicsStage

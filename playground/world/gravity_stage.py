@@ -25,7 +25,7 @@ import pymunk.batch as batch
 from numpy.typing import NDArray
 
 from playground._batch import lookup, read_positions
-from playground.forces import Category, ForceLedger
+from playground.forces.ledger import Category, ForceLedger
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
 
 __all__ = ["FieldForces", "GravityStage"]

@@ -6,7 +6,7 @@ force set straight on a body before every substep (pymunk clears them after each
 space; FORCES recovers each tracked body's engine forces by reverse integration; FILTER turns them
 into perceived gravity. Few tracked bodies with one substep, no contact split and a field uniform
 in space are served by the scalar path in plain floats (:mod:`playground.scalar`); the rest by
-numpy and ``pymunk.batch`` (:class:`~playground.forces.ForceSolver`,
+numpy and ``pymunk.batch`` (:class:`~playground.forces.solver.ForceSolver`,
 :class:`~playground.perception.PerceivedGravity`). Both paths give the same readings; the state
 moves with a switch.
 """
@@ -21,7 +21,8 @@ import pymunk
 from numpy.typing import NDArray
 
 from playground._batch import BodyRows, lookup
-from playground.forces import ForceLedger, ForceSolver
+from playground.forces.ledger import ForceLedger
+from playground.forces.solver import ForceSolver
 from playground.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
 from playground.limits import RUNAWAY_FORCE
 from playground.perception import PerceivedGravity

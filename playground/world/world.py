@@ -29,7 +29,8 @@ import pymunk
 import pymunk.batch as batch
 
 from playground._validate import bounded_vec, in_range
-from playground.forces import ForceLedger, ForceSolver
+from playground.forces.ledger import ForceLedger
+from playground.forces.solver import ForceSolver
 from playground.gravity import GravityField, GravityRule, Uniform
 from playground.guard import GUARD_EVERY, RunawayError, state_runaway
 from playground.limits import (
@@ -74,7 +75,7 @@ class World(ForceAPI):
     pymunk body acts too, for the whole step like any other (see ``WorldConfig.substeps``); the
     solver counts it as APPLIED. The space drops an arbiter as soon as its contact ends
     (``collision_persistence`` 1), so arbiter impulses are the impulses applied (see
-    :class:`~playground.forces.ForceSolver`).
+    :class:`~playground.forces.solver.ForceSolver`).
     """
 
     def __init__(
