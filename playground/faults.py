@@ -28,9 +28,10 @@ from contextlib import AbstractContextManager, contextmanager
 from dataclasses import dataclass
 from typing import Any
 
-from playground import controller as controller_mod
 from playground import movers as movers_mod
 from playground import perception as perception_mod
+from playground.controller.config import ControllerConfig
+from playground.controller.controller import Controller
 from playground.forces import Category
 from playground.gravity import GravityRule
 from playground.level.document import Level
@@ -166,7 +167,7 @@ def _after(
 
 def _controller_config(**change: Callable[[float], float]) -> AbstractContextManager[None]:
     """Controllers built while open get their config fields changed: ``field=f(old value)``."""
-    known = {f.name for f in dataclasses.fields(controller_mod.ControllerConfig)}
+    known = {f.name for f in dataclasses.fields(ControllerConfig)}
     for key in change:
         if key not in known:
             raise BreakError(f"ControllerConfig has no field {key!r}: the break cannot follow it")
@@ -179,7 +180,7 @@ def _controller_config(**change: Callable[[float], float]) -> AbstractContextMan
 
         return init
 
-    return _replaced(controller_mod.Controller, "__init__", make)
+    return _replaced(Controller, "__init__", make)
 
 
 def _rotate(v: tuple[float, float], angle: float) -> tuple[float, float]:
@@ -225,7 +226,7 @@ def _hover_reaction() -> Iterator[None]:
         )
         return force
 
-    with _after(controller_mod.Controller, "_hover", ("world", "hit"), then):
+    with _after(Controller, "_hover", ("world", "hit"), then):
         yield
 
 
@@ -233,7 +234,7 @@ def _hover_reaction() -> Iterator[None]:
 def _hover_removed() -> Iterator[None]:
     """No hover spring at all: the capsule stands on its own end cap, and with no hover force
     the drive has no traction."""
-    with _replaced(controller_mod.Controller, "_hover", lambda _: lambda *a, **k: 0.0):
+    with _replaced(Controller, "_hover", lambda _: lambda *a, **k: 0.0):
         yield
 
 
@@ -247,7 +248,7 @@ def _hover_reading() -> Iterator[None]:
         k = HOVER_READING_SCALE
         me.last_forces = dataclasses.replace(me.last_forces, hover=(k * hx, k * hy))
 
-    with _after(controller_mod.Controller, "_control", ("self",), then):
+    with _after(Controller, "_control", ("self",), then):
         yield
 
 
@@ -264,7 +265,7 @@ def _drive_world_frame() -> Iterator[None]:
         }
         return dataclasses.replace(hit, **motion)
 
-    with _with_argument(controller_mod.Controller, "_drive", "hit", still):
+    with _with_argument(Controller, "_drive", "hit", still):
         yield
 
 
@@ -280,9 +281,7 @@ def _ground_acceleration_ignored() -> Iterator[None]:
     """The drive and the hover no longer feed the ground's own acceleration forward: on an
     accelerating platform the player lags behind it by its acceleration × the drive's time
     constant."""
-    with _replaced(
-        controller_mod.Controller, "_ground_acceleration", lambda _: lambda *a, **k: (0.0, 0.0)
-    ):
+    with _replaced(Controller, "_ground_acceleration", lambda _: lambda *a, **k: (0.0, 0.0)):
         yield
 
 
@@ -290,16 +289,14 @@ def _ground_acceleration_ignored() -> Iterator[None]:
 def _traction_unbounded() -> Iterator[None]:
     """The drive is no longer bounded by traction × hover force (only by its budget): a body
     with no weight on its feet still pushes itself along the ground."""
-    with _with_argument(
-        controller_mod.Controller, "_drive", "hover", lambda _: TRACTION_FREE_HOVER
-    ):
+    with _with_argument(Controller, "_drive", "hover", lambda _: TRACTION_FREE_HOVER):
         yield
 
 
 @_register("balance_off")
 def _balance_off() -> Iterator[None]:
     """No balance torque: the capsule no longer keeps itself upright."""
-    with _replaced(controller_mod.Controller, "_balance", lambda _: lambda *a, **k: 0.0):
+    with _replaced(Controller, "_balance", lambda _: lambda *a, **k: 0.0):
         yield
 
 
@@ -312,7 +309,7 @@ def _grip_reading() -> Iterator[None]:
         get = original.fget
         return property(lambda self: GRIP_READING_SCALE * get(self))
 
-    with _replaced(controller_mod.Controller, "grip", make):
+    with _replaced(Controller, "grip", make):
         yield
 
 
@@ -334,7 +331,7 @@ def _push_reaction_off() -> Iterator[None]:
         a["world"].apply_force(me.body, (-force[0], -force[1]), category=Category.SUPPORT)
         return force
 
-    with _after(controller_mod.Controller, "_push", ("self", "world"), then):
+    with _after(Controller, "_push", ("self", "world"), then):
         yield
 
 
@@ -355,7 +352,7 @@ def _nullify_leaks() -> Iterator[None]:
 def _own_gravity_ignored() -> Iterator[None]:
     """The controller ignores its own-gravity switch (the intent's ``gravity``)."""
     with _with_argument(
-        controller_mod.Controller,
+        Controller,
         "_gravity_actions",
         "it",
         lambda it: dataclasses.replace(it, gravity=None),

@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground.controller import hover_spring
+from playground.controller.spring import hover_spring
 from playground.forces.ledger import Category
 
 if TYPE_CHECKING:

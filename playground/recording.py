@@ -44,7 +44,7 @@ from typing import IO, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from playground.controller import State
+from playground.controller.states import State
 from playground.scene import Scene
 from playground.world.schedule import Stage
 from playground.world.world import World

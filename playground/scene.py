@@ -45,7 +45,7 @@ from playground.world.config import WorldConfig
 from playground.world.world import World
 
 if TYPE_CHECKING:
-    from playground.controller import Controller
+    from playground.controller.controller import Controller
 
 __all__ = ["Scene", "build"]
 
@@ -385,7 +385,7 @@ def make_prop(world: World, model: Prop) -> pymunk.Body:
 
 
 def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
-    from playground.controller import Controller
+    from playground.controller.controller import Controller
     from playground.intents import Patrol, Script
 
     source: Any = None

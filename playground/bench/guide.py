@@ -395,7 +395,8 @@ HOVER_DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240)
 def hover_error(frequency: float, damping: float, dt: float) -> float:
     """RMS over 1 s of (height − the continuous damped oscillator's) / drop, for a player released
     5 mm below its ride height; inf if the controller refuses the setting (beyond its limit)."""
-    from playground.controller import Controller, ControllerConfig
+    from playground.controller.config import ControllerConfig
+    from playground.controller.controller import Controller
     from playground.world.config import WorldConfig
     from playground.world.world import World
 

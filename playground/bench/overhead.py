@@ -24,7 +24,7 @@ import pymunk
 
 from playground.bench.blocks import interleave
 from playground.bench.pile import floor_length, pile_space, pile_world
-from playground.controller import Controller
+from playground.controller.controller import Controller
 from playground.gravity import GravityRule, Radial, RotatingRoom, Turn
 from playground.movers import Sine
 from playground.world.config import WorldConfig

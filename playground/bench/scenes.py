@@ -23,7 +23,8 @@ from dataclasses import dataclass
 
 import pymunk
 
-from playground.controller import Controller, ControllerConfig
+from playground.controller.config import ControllerConfig
+from playground.controller.controller import Controller
 from playground.gravity import STANDARD_GRAVITY
 from playground.movers import Elevator, Spin, ring_room
 from playground.world.config import WorldConfig

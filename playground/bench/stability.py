@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import pymunk
 
-from playground.controller import Controller
+from playground.controller.controller import Controller
 from playground.gravity import STANDARD_GRAVITY
 from playground.intents import Idle, Intent, Script
 from playground.movers import Spin, Waypoints, ring_room

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pymunk
 
-from playground.controller import ControllerConfig
+from playground.controller.config import ControllerConfig
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, record

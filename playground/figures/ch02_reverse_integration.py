@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from playground.controller import ControllerConfig
+from playground.controller.config import ControllerConfig
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, G, level_scene, record

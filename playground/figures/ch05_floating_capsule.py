@@ -12,7 +12,10 @@ from typing import Literal
 import numpy as np
 import pymunk
 
-from playground.controller import Controller, ControllerConfig, State, hover_limit, hover_spring
+from playground.controller.config import ControllerConfig
+from playground.controller.controller import Controller
+from playground.controller.spring import hover_limit, hover_spring
+from playground.controller.states import State
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number
 from playground.figures.runs import DT, Array, record

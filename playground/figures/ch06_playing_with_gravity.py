@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 import pymunk
 
-from playground.controller import ControllerConfig, State
+from playground.controller.config import ControllerConfig
+from playground.controller.states import State
 from playground.figures.ch01_kinematic_vs_force_driven import ch1_budget_accel
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number

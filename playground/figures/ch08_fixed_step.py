@@ -9,7 +9,9 @@ from pathlib import Path
 
 import numpy as np
 
-from playground.controller import Controller, ControllerConfig, hover_limit
+from playground.controller.config import ControllerConfig
+from playground.controller.controller import Controller
+from playground.controller.spring import hover_limit
 from playground.figures.ch05_floating_capsule import HOVER_DROP, hover_run, hover_theory
 from playground.figures.plot import axes, save
 from playground.figures.registry import figure, number

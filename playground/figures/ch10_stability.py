@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pymunk
 
-from playground.controller import hover_spring
+from playground.controller.spring import hover_spring
 from playground.figures.plot import save
 from playground.figures.registry import figure, number
 from playground.figures.runs import Array

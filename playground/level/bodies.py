@@ -84,7 +84,7 @@ class Actor(Table):
 
 def controller_config(params: dict[str, float | bool]) -> Any:
     """Build a ``ControllerConfig`` from ``params``; ValueError naming a wrong key."""
-    from playground.controller import ControllerConfig
+    from playground.controller.config import ControllerConfig
 
     names = [f.name for f in dataclasses.fields(ControllerConfig)]
     for key in params:

@@ -22,7 +22,7 @@ from typing import Any
 
 import pygame
 
-from playground.controller import hover_limit
+from playground.controller.spring import hover_limit
 from playground.view.draw import COLOURS
 
 __all__ = ["SAFE_FRACTION", "SLIDERS", "Knobs", "Slider", "TuningPanel"]

@@ -1,0 +1,302 @@
+"""Acting, the last part of a controller's step: the force laws — hover, drive, air steering,
+balance, jump, push — each within its budget and each with its reaction (Newton's third law).
+
+The functions here are the :class:`~playground.controller.controller.Controller`'s methods (it
+binds them by name); the model they follow is in its docstring.
+
+>>> ControllerForces().hover
+(0.0, 0.0)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import pymunk
+
+from playground.controller._vec import ZERO, Vec, scaled, unit_or
+from playground.controller.spring import hover_spring
+from playground.controller.states import State
+from playground.forces.ledger import Category
+from playground.world.world import World
+
+if TYPE_CHECKING:
+    from playground.controller.controller import Controller
+    from playground.controller.sensing import GroundHit
+
+__all__ = [
+    "NO_FORCES",
+    "ControllerForces",
+    "act",
+    "balance",
+    "drive",
+    "height",
+    "hover",
+    "jump",
+    "push",
+    "react",
+    "steer",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class ControllerForces:
+    """The forces the controller put on its own body in the last step (N, N·m).
+
+    ``grip`` is the joint force of the step before (a joint's force is known only after the
+    step it acts in).
+    """
+
+    hover: Vec = ZERO
+    drive: Vec = ZERO
+    grip: Vec = ZERO
+    push: Vec = ZERO
+    balance_torque: float = 0.0
+
+
+NO_FORCES = ControllerForces()
+
+
+def act(self: Controller, world: World, gx: float, gy: float) -> None:
+    """Act on what was sensed and decided, with the gravity ``(gx, gy)`` at the body (m/s²): the
+    gravity switches, then the state's forces (none while off balance), each applied to the
+    world with its category and recorded in :attr:`~Controller.last_forces`."""
+    it = self.intent
+    self._gravity_actions(world, it)
+    cfg = self.config
+    dt = world.config.dt
+    t = world.time
+    hit = self.probe
+    ux, uy = self.up
+    state = self.state
+
+    hover = drive = push = ZERO
+    torque = 0.0
+    self.pushed = None
+    if state is State.OFF_BALANCE:
+        self.last_forces = NO_FORCES
+        return
+
+    jumped = False
+    grounded = state in (State.GROUNDED, State.GETTING_UP, State.CRUSHED)
+    may_jump = state is State.GROUNDED or (
+        state is State.AIRBORNE and t - self._grounded_at <= cfg.coyote_time
+    )
+    if may_jump and t - self._jump_pressed_at <= cfg.jump_buffer:
+        # The take-off step still carries the weight (hover and drive act once more), so the
+        # body leaves at exactly jump_speed relative to the ground.
+        jumped = self._jump(world, hit if hit is not None else self._last_ground, ux, uy)
+        if jumped:
+            self.state = State.AIRBORNE
+
+    if grounded and hit is not None and hit.walkable:
+        hover_f = self._hover(world, hit, gx, gy, t)
+        hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
+        if state is not State.CRUSHED:
+            drive = self._drive(world, hit, it.move, gx, gy, hover_f, dt)
+    elif state is State.AIRBORNE and it.move != 0.0 and not jumped:
+        drive = self._steer(world, it.move, ux, uy, dt)
+
+    if it.push:
+        push = self._push(world, hit)
+    if not cfg.lock_rotation:
+        torque = self._balance(world, hit if grounded else None, ux, uy, dt)
+
+    grip = ZERO
+    if self.joint is not None:
+        e = world.forces(self.name).engine
+        grip = scaled(e, self.grip)
+    self.last_forces = ControllerForces(hover, drive, grip, push, torque)
+
+
+def hover(self: Controller, world: World, hit: GroundHit, gx: float, gy: float, t: float) -> float:
+    """The hover spring along the ground normal, within ``hover_force``: apply it and its
+    reaction and return its magnitude, N (the target height rises smoothly while getting up)."""
+    cfg = self.config
+    target = cfg.ride_height
+    if self.state is State.GETTING_UP:
+        s = min(1.0, (t - self._getup_at) / cfg.getup_time)
+        target = self._getup_from + (target - self._getup_from) * s * s * (3.0 - 2.0 * s)
+    nx, ny = hit.normal
+    height = self._height(hit)
+    vx, vy = self._vx, self._vy
+    # The height's rate of change over a rigidly moving ground is the velocity relative to the
+    # ground's frame at our centre along n: the hit point's own velocity also carries
+    # ω × (centre − hit), which on a turning floor with a slanted normal (a ring's chord
+    # ends) reads as a spurious normal speed and makes the damper let go.
+    gvx, gvy = hit.frame_velocity
+    v_n = (vx - gvx) * nx + (vy - gvy) * ny
+    # The weight felt in the ground's frame (gravity minus the frame's acceleration: inside a
+    # spinning ring, the centrifugal m·ω²·r) as feed-forward: it rests exactly at ride height.
+    ax, ay = hit.frame_acceleration
+    m = self._m
+    weight = m * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
+    if weight == 0.0 and gx == 0.0 and gy == 0.0:
+        # Weightless (a nullified body) and not pressed on this ground by its frame either:
+        # nothing holds us on it, the legs push with nothing. Otherwise a weightless body
+        # whose held up swings toward whatever it bumps (its inner ear reads the bump as
+        # gravity) finds that body at its flank, a few tenths of a metre away, and the spring
+        # kicks off it at its budget.
+        return 0.0
+    wc = world.config
+    # hover_stiffness and hover_damping_coefficient, from the one mass read above.
+    omega = self._omega
+    k = m * omega * omega
+    c = 2.0 * cfg.hover_damping * m * omega
+    spring = hover_spring(k, c, m, target - height, v_n, wc.dt, wc.substeps)
+    f = min(cfg.hover_force, max(0.0, weight + spring))
+    if f > 0.0:
+        fx, fy = f * nx, f * ny
+        world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
+        react(world, hit.body, fx, fy, hit.point)
+    return f
+
+
+def height(self: Controller, hit: GroundHit) -> float:
+    """Height of the centre over the hit point along the ground normal, m."""
+    return (self._px - hit.point[0]) * hit.normal[0] + (self._py - hit.point[1]) * hit.normal[1]
+
+
+def drive(
+    self: Controller,
+    world: World,
+    hit: GroundHit,
+    move: float,
+    gx: float,
+    gy: float,
+    hover: float,
+    dt: float,
+) -> Vec:
+    """Drive along the ground tangent toward ground velocity + ``move``·max_speed, within
+    ``ground_force`` and traction × ``hover`` (N); apply it and its reaction, return it, N."""
+    cfg = self.config
+    nx, ny = hit.normal
+    tx, ty = ny, -nx  # the surface tangent: its normal rotated by −90°
+    vx, vy = self._vx, self._vy
+    # Relative to the ground's frame at our centre, not to the hit point: on a turning floor
+    # the hit point, ride height further from the axis, moves faster than standing still.
+    gvx, gvy = hit.frame_velocity
+    v_t = (vx - gvx) * tx + (vy - gvy) * ty
+    # Feed-forward: the tangential part of the gravity felt in the ground's frame (gravity
+    # minus the ground's acceleration, its own included on a kinematic ground), so slopes
+    # hold and a turning floor's chords (slopes to the centrifugal force) do not creep.
+    ax, ay = hit.frame_acceleration
+    accel = (move * cfg.max_speed - v_t) / max(cfg.drive_time, dt) - (
+        (gx - ax) * tx + (gy - ay) * ty
+    )
+    budget = min(cfg.ground_force, cfg.traction * hover)
+    f = max(-budget, min(budget, self._m * accel))
+    if f == 0.0:
+        return ZERO
+    fx, fy = f * tx, f * ty
+    world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
+    react(world, hit.body, fx, fy, hit.point)
+    return (fx, fy)
+
+
+def steer(self: Controller, world: World, move: float, ux: float, uy: float, dt: float) -> Vec:
+    """Air steering toward move·max_speed along up's tangent; it never brakes."""
+    cfg = self.config
+    tx, ty = uy, -ux
+    vx, vy = self._vx, self._vy
+    f = self._m * (move * cfg.max_speed - (vx * tx + vy * ty)) / max(cfg.drive_time, dt)
+    if f * move <= 0.0:
+        return ZERO
+    f = max(-cfg.air_force, min(cfg.air_force, f))
+    world.apply_force(self.body, (f * tx, f * ty), category=Category.APPLIED)
+    return (f * tx, f * ty)
+
+
+def balance(
+    self: Controller, world: World, hit: GroundHit | None, ux: float, uy: float, dt: float
+) -> float:
+    """The upright PD torque toward up, within ``balance_torque``; apply it (and its
+    reaction on a dynamic ground) and return it, N·m. Counts how long the budget falls short."""
+    cfg = self.config
+    body = self.body
+    r = body.rotation_vector
+    ax, ay = -r.y, r.x
+    err = math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
+    wb = self._wb
+    # Damp the spin relative to the ground's, so the body turns with a turning floor (inside
+    # a spinning ring) instead of lagging behind it.
+    spin = body.angular_velocity - (hit.body.angular_velocity if hit is not None else 0.0)
+    need = body.moment * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
+    budget = cfg.balance_torque
+    torque = max(-budget, min(budget, need))
+    touching = hit is not None or self.contact_load > 0.0 or self._touching()
+    if abs(need) > budget and touching and self.state is not State.GETTING_UP:
+        self._saturated += dt
+    else:
+        self._saturated = 0.0
+    world.apply_torque(body, torque, category=Category.APPLIED)
+    if hit is not None and hit.body.body_type == pymunk.Body.DYNAMIC:
+        world.apply_torque(hit.body, -torque, category=Category.SUPPORT)
+    return torque
+
+
+def jump(self: Controller, world: World, ground: GroundHit | None, ux: float, uy: float) -> bool:
+    """Take off at ``jump_speed`` along up relative to the ground: an impulse on us and its
+    reaction on a dynamic ground. False if already rising that fast."""
+    cfg = self.config
+    vx, vy = self._vx, self._vy
+    gvx, gvy = ground.frame_velocity if ground is not None else ZERO
+    dv = cfg.jump_speed - ((vx - gvx) * ux + (vy - gvy) * uy)
+    self._jump_pressed_at = -math.inf
+    self._grounded_at = -math.inf
+    if dv <= 0.0:
+        return False
+    m = self._m
+    jx, jy = m * dv * ux, m * dv * uy
+    world.apply_impulse(self.body, (jx, jy), category=Category.SUPPORT)
+    if ground is not None and ground.body.body_type == pymunk.Body.DYNAMIC:
+        # The reaction, as _react's: a static or kinematic ground takes no impulse.
+        world.apply_impulse(ground.body, (-jx, -jy), point=ground.point, category=Category.SUPPORT)
+    self._rising = True
+    return True
+
+
+def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
+    """Push the nearest dynamic body within reach of the head or the chest (not the ground),
+    away from us, with the whole push budget; the reaction goes onto us."""
+    cfg = self.config
+    p = self.body.position
+    ax, ay = self.axis
+    half = cfg.half_length
+    ground = hit.body if hit is not None else None
+    best: pymunk.PointQueryInfo | None = None
+    origin = (p.x, p.y)
+    for qx, qy in ((p.x + ax * half, p.y + ay * half), (p.x, p.y)):
+        for info in world.space.point_query((qx, qy), cfg.radius + cfg.push_reach, self._filter):
+            shape = info.shape
+            if (
+                shape is None
+                or shape.sensor
+                or shape.body is None
+                or shape.body is ground
+                or shape.body.body_type != pymunk.Body.DYNAMIC
+            ):
+                continue
+            if best is None or info.distance < best.distance:
+                best, origin = info, (qx, qy)
+    if best is None or best.shape is None or best.shape.body is None:
+        return ZERO
+    cx, cy = best.point
+    nx, ny = unit_or(cx - origin[0], cy - origin[1], (ax, ay))
+    f = cfg.push_force
+    world.apply_force(best.shape.body, (f * nx, f * ny), point=(cx, cy), category=Category.SUPPORT)
+    world.apply_force(self.body, (-f * nx, -f * ny), category=Category.SUPPORT)
+    self.pushed = ((cx, cy), (f * nx, f * ny))
+    return (-f * nx, -f * ny)
+
+
+def react(world: World, ground: pymunk.Body, fx: float, fy: float, point: Vec) -> None:
+    """Newton's third law for hover and drive: −(fx, fy) (N) on the ground at ``point`` (m), a
+    SUPPORT force (it stands in for a contact). Only a dynamic ground takes it: the world drops
+    forces on static and kinematic bodies, so for those the call would only repeat the check of
+    a force of the magnitude ours has just passed (and of a hit point within the probe's reach).
+    """
+    if ground.body_type == pymunk.Body.DYNAMIC:
+        world.apply_force(ground, (-fx, -fy), point=point, category=Category.SUPPORT)

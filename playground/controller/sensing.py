@@ -1,0 +1,222 @@
+"""Sensing, the first part of a controller's step: the body's state, the gravity at it, its up,
+the ground under it (:class:`GroundHit`, from a swept probe) and the load pressing on it.
+
+The functions here are the :class:`~playground.controller.controller.Controller`'s methods (it
+binds them by name); they read the world and write only the controller's own sensed state.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import pymunk
+
+from playground.controller._vec import ZERO, Vec, unit_or
+from playground.controller.states import State
+from playground.world.world import World
+
+if TYPE_CHECKING:
+    from playground.controller.controller import Controller
+
+__all__ = [
+    "GroundHit",
+    "contact_load",
+    "gravity",
+    "ground_acceleration",
+    "probe",
+    "sense",
+    "touching",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class GroundHit:
+    """What the ground probe found (plain values except the hit body).
+
+    Attributes:
+        body: the body hit.
+        point: the hit point on its surface, m.
+        normal: the surface normal there (unit, pointing out of the ground).
+        distance: from the hit point to the capsule's centre along up, m.
+        walkable: the normal is within ``max_slope`` of up.
+        frame_velocity: velocity that keeps the capsule's centre fixed to the ground over the
+            coming step, m/s: the ground's velocity plus the chord (R(ω·dt) − 1)·d/dt its turn
+            carries our centre along (d from its centre of gravity; ω × d to first order, like
+            ``ground.velocity_at_world_point(centre)``). Standing still on the ground means
+            moving at this velocity: on a turning floor it is taken at the centre, not at the hit
+            point, which is ride height further out (inside a ring spinning at ω the hit point's
+            speed is ω·R, the centre's ω·(R − ride height)).
+        frame_acceleration: how much ``frame_velocity`` changes per second, m/s²: as the ground
+            turns by ω·dt (the centripetal −ω²·d to first order), plus, on a kinematic ground,
+            its own acceleration A + α × d read from how its velocity and spin changed since the
+            last step (a mover sets them a step ahead, so this is the acceleration the coming
+            step needs). A dynamic ground's change of velocity is partly our own reaction on it:
+            feeding that back would push a light crate harder the more it yields, so its
+            acceleration is left to the drive's feedback. Gravity minus ``frame_acceleration``
+            is the gravity *felt* in the ground's frame: inside a spinning ring, ω²·r outward;
+            in a lift accelerating up at a, g + a.
+    """
+
+    body: pymunk.Body
+    point: Vec
+    normal: Vec
+    distance: float
+    walkable: bool
+    frame_velocity: Vec
+    frame_acceleration: Vec
+
+
+def sense(self: Controller, world: World) -> Vec:
+    """Read the body (position, velocity, mass), the gravity at it, up, the ground under it
+    (:attr:`~Controller.probe`) and the load on it; return the gravity, m/s².
+
+    Up is the perceived one while supported and the field while airborne (it sees where it will
+    land), fallen or getting up (contacts while lying and rising shake the inner ear).
+    """
+    body = self.body
+    p = body.position
+    self._px, self._py = p.x, p.y
+    v = body.velocity
+    self._vx, self._vy = v.x, v.y
+    self._m = float(body.mass)
+    gx, gy = self._gravity(world)
+
+    supported = self.state in (State.GROUNDED, State.HANGING, State.CRUSHED)
+    if supported:
+        ux, uy = world.perceived_up(self.name)
+        if not (math.isfinite(ux) and math.isfinite(uy)):
+            ux, uy = unit_or(-gx, -gy, self.up)
+        elif math.hypot(*world.perceived_gravity(self.name)) < self._up_threshold:
+            # Just caught after a free fall: the inner ear still holds the up from before the
+            # fall (after a gravity flip, the opposite one) until the new support has built
+            # up a reading: keep the up we fell with meanwhile.
+            ux, uy = self.up
+    else:
+        ux, uy = unit_or(-gx, -gy, self.up)
+    self.up = (ux, uy)
+
+    self.probe = self._probe(world, ux, uy)
+    self.contact_load = self._contact_load(world, ux, uy)
+    pushed = self.last_forces.push
+    self.load = self.contact_load + max(0.0, -(pushed[0] * ux + pushed[1] * uy))
+    return (gx, gy)
+
+
+def gravity(self: Controller, world: World) -> Vec:
+    """The gravity at the body, m/s²: ``world.gravity_at`` in general, and for a field uniform
+    in space the value the GRAVITY stage has just put in ``space.gravity`` with the body's rule
+    applied in plain floats (the numpy path costs ~0.2 ms a call for one body)."""
+    if not world.gravity.uniform:
+        return world.gravity_at(self.name)
+    g = world.space.gravity
+    rule = world.gravity_rule(self.name)
+    if rule.direction is None:
+        return (rule.scale * g.x, rule.scale * g.y)
+    mag = rule.scale * math.hypot(g.x, g.y)
+    return (mag * rule.direction[0], mag * rule.direction[1])
+
+
+def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | None:
+    """Sweep a circle from the centre along −up; the nearest other shape is the ground."""
+    cfg = self.config
+    px, py = self._px, self._py
+    length = cfg.probe_length
+    # Every hit, then the nearest: with a radius, pymunk 7.3.1's segment_query_first can
+    # return a farther shape (inside a 64-segment ring it reports a neighbouring chord's end
+    # cap, normal 40° off, while the chord under the probe is 7 cm nearer).
+    hits = world.space.segment_query(
+        (px, py), (px - ux * length, py - uy * length), cfg.probe_radius, self._filter
+    )
+    info: pymunk.SegmentQueryInfo | None = None
+    for h in hits:
+        shape = h.shape
+        # Strictly nearer only: of equally near hits the first wins (as min() would pick).
+        if shape is not None and not shape.sensor and (info is None or h.alpha < info.alpha):
+            info = h
+    if info is None or info.shape is None or info.shape.body is None:
+        self._ground_motion = None
+        return None
+    ground = info.shape.body
+    hx, hy = info.point
+    nx, ny = info.normal
+    # The ground's frame at our centre, as pymunk's step needs it: positions move with the
+    # velocity before the step, so standing still on a ground turning by θ = ω·dt this step
+    # takes the velocity that carries our centre to where the ground carries that point,
+    # V + (R(θ) − 1)·d/dt (d from the ground's centre of gravity), not the tangent ω × d,
+    # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
+    # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
+    dt = world.config.dt
+    turn = ground.angular_velocity * dt
+    cos_t, sin_t = math.cos(turn), math.sin(turn)
+    cog = ground.local_to_world(ground.center_of_gravity)
+    dx, dy = px - cog.x, py - cog.y
+    rx = (cos_t * dx - sin_t * dy - dx) / dt
+    ry = (sin_t * dx + cos_t * dy - dy) / dt
+    v = ground.velocity
+    own_x, own_y = self._ground_acceleration(ground, dx, dy, dt)
+    return GroundHit(
+        body=ground,
+        point=(hx, hy),
+        normal=(nx, ny),
+        distance=(px - hx) * ux + (py - hy) * uy,
+        walkable=nx * ux + ny * uy >= self._cos_slope,
+        frame_velocity=(v.x + rx, v.y + ry),
+        frame_acceleration=(
+            (cos_t * rx - sin_t * ry - rx) / dt + own_x,
+            (sin_t * rx + cos_t * ry - ry) / dt + own_y,
+        ),
+    )
+
+
+def ground_acceleration(
+    self: Controller, ground: pymunk.Body, dx: float, dy: float, dt: float
+) -> Vec:
+    """The ground's own acceleration at our centre, A + α × d (m/s², d from its centre of
+    gravity, m), read from how its velocity and spin changed since the last step (dt, s).
+
+    Fed forward, it lets the drive and the hover keep up with an accelerating platform
+    instead of lagging a·drive_time behind it (5 cm over a second at 1 m/s²). Only for a
+    kinematic ground (zero otherwise, and on the first step over a new ground): a dynamic
+    ground's change of velocity is partly our own reaction on it.
+    """
+    if ground.body_type != pymunk.Body.KINEMATIC:
+        self._ground_motion = None
+        return ZERO
+    v = ground.velocity
+    w = ground.angular_velocity
+    prev = self._ground_motion
+    self._ground_motion = (ground, v.x, v.y, w)
+    if prev is None or prev[0] is not ground:
+        return ZERO
+    alpha = (w - prev[3]) / dt
+    return ((v.x - prev[1]) / dt - alpha * dy, (v.y - prev[2]) / dt + alpha * dx)
+
+
+def contact_load(self: Controller, world: World, ux: float, uy: float) -> float:
+    """Force pressing on us along −up through contacts in the last step, N (the floor's push
+    along +up does not count)."""
+    h = world.config.dt / world.config.substeps
+    load = 0.0
+
+    def visit(arb: pymunk.Arbiter) -> None:
+        nonlocal load
+        # Our body is the arbiter's first; total_impulse is the impulse on it.
+        jx, jy = arb.total_impulse
+        load += max(0.0, -(jx * ux + jy * uy)) / h
+
+    self.body.each_arbiter(visit)
+    return load
+
+
+def touching(self: Controller) -> bool:
+    """Whether any contact touches the body now."""
+    found = False
+
+    def visit(arb: pymunk.Arbiter) -> None:
+        nonlocal found
+        found = True
+
+    self.body.each_arbiter(visit)
+    return found
