@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import pymunk
 import pytest
 
-from playground import Category, GravityRule, Stage, World, WorldConfig
+from playground import Category, GravityRule, Radial, Stage, World, WorldConfig
 from playground.forces import BodyForces
 
 TOL_REL = 1e-9
@@ -164,13 +164,26 @@ the same order, except magnitudes (``math.hypot`` against numpy's complex ``abs`
 differ in the last place; the 1€ filter's feedback keeps that at round-off."""
 
 
-def scene(seed: int, scalar_max: int) -> Iterator[tuple[World, Oracle, dict[str, BodyForces]]]:
+KINDS = ("uniform", "split", "field")
+"""Scenes: uniform gravity; the contact split on (arbiters kept 1 or 3 steps); a radial field
+(its forces per body) with some bodies given their own direction."""
+
+
+def scene(
+    seed: int, scalar_max: int, kind: str = "uniform"
+) -> Iterator[tuple[World, Oracle, dict[str, BodyForces]]]:
     """A random scene stepped STEPS times: bodies spawned, removed and put to sleep. Yields the
     world and its oracle after every step, with the readings held from before it."""
     rng = random.Random(seed)
-    cfg = WorldConfig(damping=rng.choice([1.0, 0.8, 0.3]), sleep_time=0.3)
+    split = kind == "split"
+    cfg = WorldConfig(damping=rng.choice([1.0, 0.8, 0.3]), sleep_time=0.3, contact_split=split)
     world = World(cfg)
     world.scalar_max_bodies = scalar_max
+    if split:
+        world.space.collision_persistence = rng.choice([1, 3])
+    if kind == "field":
+        # A planet far below: gravity about 9.8 m/s², its direction and size vary over the scene.
+        world.gravity = Radial(center=(0.0, -60.0), surface_gravity=9.81, radius=60.0)
     world.add_static_segment((-10.0, 0.0), (10.0, 0.0), radius=0.1)
     world.add_static_segment((-10.0, 0.0), (-10.0, 10.0), radius=0.1)
     world.add_static_segment((10.0, 0.0), (10.0, 10.0), radius=0.1)
@@ -183,6 +196,9 @@ def scene(seed: int, scalar_max: int) -> Iterator[tuple[World, Oracle, dict[str,
         roll = rng.random()
         if roll < 0.06:
             spawn(world, oracle, rng, count)
+            if kind == "field" and rng.random() < 0.3:
+                direction = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))
+                world.set_gravity_rule(f"body{count}", GravityRule(0.8, direction))
             count += 1
         elif roll < 0.09 and oracle.tracked:
             name = rng.choice(sorted(oracle.tracked))
@@ -227,13 +243,24 @@ def _close(a: tuple[float, float], b: tuple[float, float]) -> bool:
     return math.dist(a, b) <= TOL_PATHS * scale or (a == b)
 
 
-@pytest.mark.parametrize("seed", range(5))
-def test_scalar_and_vector_paths_give_one_answer(seed: int) -> None:
+def _same(a: tuple[float, float], b: tuple[float, float]) -> bool:
+    """Equal, NaN equal to NaN (an unknown split)."""
+    return all(x == y or (math.isnan(x) and math.isnan(y)) for x, y in zip(a, b, strict=True))
+
+
+SEEDS = {"uniform": range(5), "split": range(3), "field": range(3)}
+
+
+@pytest.mark.parametrize(("kind", "seed"), [(kind, seed) for kind in KINDS for seed in SEEDS[kind]])
+def test_scalar_and_vector_paths_give_one_answer(kind: str, seed: int) -> None:
     """Law: the scalar path (always, or switching at the crossover as bodies come and go) and the
     vectorised path give the same readings and perceived gravity on every step of the same
-    random scene, within TOL_PATHS; the arrays a caller reads from ``world.solver`` and
+    random scene, within TOL_PATHS; the contact split (contact, its normal part, the
+    constraint's, and whether it is known) bit for bit; in a field that varies in space, the
+    same trajectory bit for bit. The arrays a caller reads from ``world.solver`` and
     ``world.perceived`` hold the scalar path's values too."""
-    runs = [scene(seed, PATHS[p]) for p in ("vector", "scalar", "switching")]
+    runs = [scene(seed, PATHS[p], kind) for p in ("vector", "scalar", "switching")]
+    split_known = 0
     served = 0
     for (ref, _, _), *others in zip(*runs, strict=True):
         names = sorted(n for n in ref.names if ref.solver.row_of(ref.body(n)) is not None)
@@ -246,6 +273,12 @@ def test_scalar_and_vector_paths_give_one_answer(seed: int) -> None:
                 assert _close((a.engine_torque, 0.0), (b.engine_torque, 0.0)), name
                 assert _close(ref.perceived_gravity(name), world.perceived_gravity(name)), name
                 assert _close(ref.perceived_up(name), world.perceived_up(name)), name
+                assert a.split_valid == b.split_valid, name
+                for field in ("contact", "contact_normal", "contact_friction", "constraint"):
+                    assert _same(getattr(a, field), getattr(b, field)), (name, field)
+                split_known += b.split_valid
+                body_a, body_b = ref.body(name), world.body(name)
+                assert (body_a.position, body_a.velocity) == (body_b.position, body_b.velocity)
             served += world.on_scalar_path
         if ref.steps % 60 == 0:
             # The arrays are filled from the scalar path when read.
@@ -258,3 +291,4 @@ def test_scalar_and_vector_paths_give_one_answer(seed: int) -> None:
                 e = scalar.solver.engine[row]
                 assert _close((float(e[0]), float(e[1])), scalar.forces(name).engine), name
     assert served > STEPS  # the scalar path served every step of one run, some of the other
+    assert (split_known > STEPS) == (kind == "split")

@@ -35,7 +35,7 @@ from playground.bench.blocks import Blocks, interleave
 from playground.bench.pile import floor_length, pile_names, pile_space, pile_world
 from playground.gravity import Radial
 from playground.perception import Perception
-from playground.scalar import SCALAR_MAX_BODIES
+from playground.scalar.path import SCALAR_MAX_BODIES
 from playground.world.config import WorldConfig
 from playground.world.schedule import Stage
 from playground.world.world import World

@@ -3,7 +3,9 @@
 A field uniform in space is ``space.gravity`` (pymunk integrates it at no cost); a body with its
 own rule then gets one correction force, m·(g_rule − g_space), in plain floats. A field that
 varies in space is evaluated once per step at every dynamic body, vectorised, and handed to the
-physics stage as one force row per body. The stage runs only when one of the two is needed.
+physics stage as one force row per body; while the scalar path serves the tracked bodies and the
+named dynamic bodies are few, it is evaluated body by body in plain floats instead
+(:mod:`playground.scalar.field`). The stage runs only when one of the two is needed.
 
 >>> import pymunk
 >>> from playground.forces import ForceLedger
@@ -27,6 +29,8 @@ from numpy.typing import NDArray
 from playground._batch import lookup, read_positions
 from playground.forces.ledger import Category, ForceLedger
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
+from playground.scalar.field import PlainField, PointField, point_field, ruled
+from playground.scalar.path import FieldOnBodies
 
 __all__ = ["FieldForces", "GravityStage"]
 
@@ -61,6 +65,10 @@ class GravityStage:
         self.active = False
         """Whether the stage runs: a field that is not constant, or bodies with their own rule."""
         self._pos_buffer = batch.Buffer()
+        self._plain_on = False
+        self._point: PointField | None = point_field(self.field)
+        self._plain: PlainField | None = None
+        self._reg_bodies: list[tuple[pymunk.Body, float, GravityRule]] = []
         self._registry_dirty = True
         self._reg_ids = np.zeros(0, dtype=np.uintp)
         self._reg_mass = np.zeros(0)
@@ -82,6 +90,8 @@ class GravityStage:
     def set_field(self, field: GravityField, t: float) -> None:
         """Use ``field`` from time ``t`` (s) on."""
         self.field = field
+        self._point = point_field(field)
+        self._plain = None
         self.space.gravity = self.space_gravity(t)
         self._update_active()
 
@@ -111,7 +121,15 @@ class GravityStage:
         return self._rules.get(body_id, _DEFAULT_RULE)
 
     def at(self, body: pymunk.Body, t: float) -> Vec:
-        """The gravity ``body`` feels at time ``t`` (field and rule), m/s²."""
+        """The gravity ``body`` feels at time ``t`` (field and rule), m/s²: in plain floats for
+        the kinds of field that have that form (the same numbers; numpy costs far more for one
+        body)."""
+        point = self._point
+        if point is not None:
+            rule = self._rules.get(body.id, _DEFAULT_RULE)
+            x, y = body.position
+            gx, gy = point(x, y, t)
+            return ruled(gx, gy, rule.scale, rule.direction)
         g = self.field.at(np.array([[body.position.x, body.position.y]]), t)
         rule = self._rules.get(body.id, _DEFAULT_RULE)
         d = np.array([rule.direction if rule.direction is not None else (np.nan, np.nan)])
@@ -120,8 +138,9 @@ class GravityStage:
 
     def bodies_changed(self) -> None:
         """A body was added or removed or its mass changed: rebuild the registry before the next
-        evaluation."""
+        evaluation (and plan again: the scalar path serves a field for a few bodies only)."""
         self._registry_dirty = True
+        self._replan()
 
     def forget(self, body_id: int) -> None:
         """The body left the world: drop its rule."""
@@ -135,9 +154,25 @@ class GravityStage:
 
     # -- the stage -------------------------------------------------------------------------------
 
-    def apply(self, t: float) -> FieldForces | None:
+    def plain_ready(self, max_bodies: int) -> bool:
+        """Whether the stage can serve the scalar path: no field force per body (a field uniform
+        in space), or one it evaluates in plain floats at no more than ``max_bodies`` named
+        dynamic bodies."""
+        if not self.active or self.field.uniform:
+            return True
+        if self._registry_dirty:
+            self._refresh_registry()
+        return len(self._reg_bodies) <= max_bodies and self._point is not None
+
+    def use_plain(self, on: bool) -> None:
+        """Hand a field that varies in space body by body (the scalar path serves), or as batch
+        rows."""
+        self._plain_on = on
+
+    def apply(self, t: float) -> FieldForces | FieldOnBodies | None:
         """The stage at time ``t`` (s): set ``space.gravity`` and put the rules' corrections in
-        the ledger; for a field that varies in space return its force on every body."""
+        the ledger; for a field that varies in space return its force on every body (batch rows,
+        or body by body while :meth:`use_plain` is on)."""
         if self._registry_dirty:
             self._refresh_registry()
         g_space = self.space_gravity(t)
@@ -158,6 +193,11 @@ class GravityStage:
                 m = body.mass
                 self.ledger.add(body, (m * (rx - gx), m * (ry - gy)), category=Category.PASSIVE)
             return None
+        if self._plain_on:
+            if self._plain is None:
+                assert self._point is not None
+                self._plain = PlainField(self._point, self._reg_bodies)
+            return self._plain.forces(t)
         # A field that varies in space: one vectorised evaluation at every dynamic body.
         ids, pos = read_positions(self.space, self._pos_buffer)
         cache = self._field_rows
@@ -185,6 +225,8 @@ class GravityStage:
         self._reg_ids = np.array([b.id for b in dyn], dtype=np.uintp)
         self._reg_mass = np.array([b.mass for b in dyn], dtype=np.float64)
         rules = [self._rules.get(b.id, GravityRule()) for b in dyn]
+        self._reg_bodies = [(b, b.mass, rule) for b, rule in zip(dyn, rules, strict=True)]
+        self._plain = None
         self._reg_scale = np.array([r.scale for r in rules], dtype=np.float64)
         self._reg_dir = np.array(
             [r.direction if r.direction is not None else (np.nan, np.nan) for r in rules],

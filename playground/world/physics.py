@@ -4,11 +4,11 @@ filter what the bodies feel.
 Three stages of the step live here. PHYSICS writes the ledger's forces, the field's forces and any
 force set straight on a body before every substep (pymunk clears them after each) and steps the
 space; FORCES recovers each tracked body's engine forces by reverse integration; FILTER turns them
-into perceived gravity. Few tracked bodies with one substep, no contact split and a field uniform
-in space are served by the scalar path in plain floats (:mod:`playground.scalar`); the rest by
-numpy and ``pymunk.batch`` (:class:`~playground.forces.solver.ForceSolver`,
-:class:`~playground.perception.PerceivedGravity`). Both paths give the same readings; the state
-moves with a switch.
+into perceived gravity. Few tracked bodies with one substep, in a field uniform in space or one the
+gravity stage evaluates body by body, are served by the scalar path in plain floats
+(:mod:`playground.scalar`), contact split included; the rest by numpy and ``pymunk.batch``
+(:class:`~playground.forces.solver.ForceSolver`, :class:`~playground.perception.PerceivedGravity`).
+Both paths give the same readings; the state moves with a switch.
 """
 
 from __future__ import annotations
@@ -26,7 +26,8 @@ from playground.forces.solver import ForceSolver
 from playground.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
 from playground.limits import RUNAWAY_FORCE
 from playground.perception import PerceivedGravity
-from playground.scalar import ScalarPath
+from playground.scalar.field import PlainField
+from playground.scalar.path import FieldOnBodies, ScalarPath
 from playground.world.config import WorldConfig
 from playground.world.gravity_stage import FieldForces
 
@@ -59,7 +60,9 @@ class PhysicsStage:
         self.perceivers: set[int] = set()
         """Ids of the tracked bodies whose perceived gravity is filtered."""
         # Few tracked bodies: the scalar path serves them in plain floats (see choose_path).
-        self.scalar = ScalarPath()
+        self.scalar = ScalarPath(
+            contact_split=config.contact_split, check_sleep=math.isfinite(config.sleep_time)
+        )
         self.scalar_on = False
         self._scalar_synced = True
         self._rows = BodyRows()
@@ -74,18 +77,19 @@ class PhysicsStage:
         self.config = config
         self.solver.contact_split = config.contact_split
         self.solver.check_sleep = math.isfinite(config.sleep_time)
+        self.scalar.contact_split = config.contact_split
+        self.scalar.check_sleep = self.solver.check_sleep
 
     # -- the path --------------------------------------------------------------------------------
 
-    def choose_path(self, max_bodies: int, uniform_gravity: bool) -> None:
+    def choose_path(self, max_bodies: int, plain_gravity: bool) -> None:
         """Serve the tracked bodies on the scalar path if they are at most ``max_bodies`` with one
-        substep, no contact split and a field uniform in space; on the batch path otherwise."""
-        cfg = self.config
+        substep and ``plain_gravity`` (the gravity stage can hand its forces body by body, see
+        :meth:`GravityStage.plain_ready`); on the batch path otherwise."""
         scalar = (
             0 < len(self.solver.bodies) <= max_bodies
-            and cfg.substeps == 1
-            and not cfg.contact_split
-            and uniform_gravity
+            and self.config.substeps == 1
+            and plain_gravity
         )
         if scalar != self.scalar_on:
             if scalar:
@@ -155,20 +159,25 @@ class PhysicsStage:
 
     # -- the stages ------------------------------------------------------------------------------
 
-    def step(self, field: FieldForces | None) -> None:
+    def step(self, field: FieldForces | FieldOnBodies | None) -> None:
         """PHYSICS: write the forces, step the space ``config.substeps`` times, and feed each
         substep's velocities to the solver. ``field`` is the gravity stage's force on every body
-        of a field that varies in space."""
+        of a field that varies in space: batch rows, or body by body on the scalar path."""
         cfg = self.config
         n = cfg.substeps
         h = cfg.dt / n
         self.ledger.flush()
-        field_force = None if field is None else field[1]
         # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
         # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
         scalar = self.scalar_on
-        batched = field_force is not None or (bool(self.solver.bodies) and not scalar) or n > 1
-        if batched:
+        if scalar:
+            if field is not None:
+                assert not isinstance(field, tuple)
+                PlainField.write(field, sleeping=self.solver.check_sleep)
+            self.scalar.before_step(field)
+            self._scalar_synced = False
+        elif field is not None or self.solver.bodies or n > 1:
+            assert field is None or isinstance(field, tuple)
             self._rows.read(self.space)
             field_rows: NDArray[np.float64] | None
             if field is not None and np.array_equal(field[0], self._rows.ids):
@@ -186,11 +195,8 @@ class PhysicsStage:
                 self._write_forces()
             else:
                 field_rows = None
-            if self.solver.bodies and not scalar:
+            if self.solver.bodies:
                 self.solver.before_step(self._rows.ids, self._rows.state, field_rows)
-        if scalar:
-            self.scalar.before_step()
-            self._scalar_synced = False
         for k in range(n):
             if k > 0:
                 self._write_forces()
@@ -199,7 +205,7 @@ class PhysicsStage:
             self.space.step(h)
             self._space_steps += 1
             if scalar:
-                self.scalar.after_substep(check_sleep=self.solver.check_sleep)
+                self.scalar.after_substep(self.space, stamp=self._space_steps, rescaled=rescaled)
             elif self.solver.bodies:
                 ids, vel = self._rows.read_velocities(self.space)
                 self.solver.after_substep(

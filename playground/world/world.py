@@ -42,7 +42,7 @@ from playground.limits import (
 )
 from playground.movers import Mover, Path
 from playground.perception import PerceivedGravity, Perception
-from playground.scalar import SCALAR_MAX_BODIES
+from playground.scalar.path import SCALAR_MAX_BODIES
 from playground.world.config import WorldConfig
 from playground.world.force_api import ForceAPI
 from playground.world.gravity_stage import GravityStage
@@ -159,7 +159,8 @@ class World(ForceAPI):
         gravity = self._gravity
         physics = self._physics
         schedule = self._schedule
-        physics.choose_path(self.scalar_max_bodies, not gravity.active or gravity.field.uniform)
+        physics.choose_path(self.scalar_max_bodies, gravity.plain_ready(self.scalar_max_bodies))
+        gravity.use_plain(physics.scalar_on)
         self._bare = not (
             schedule.inputs
             or schedule.events

@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
+from numpy.typing import NDArray
 
 from playground.gravity import Radial
 from playground.world.config import WorldConfig
@@ -26,24 +28,46 @@ def _pile(n: int, config: WorldConfig | None = None) -> World:
     [
         (3, WorldConfig(), True),
         (3, WorldConfig(substeps=2), False),
-        (3, WorldConfig(contact_split=True), False),
+        (3, WorldConfig(contact_split=True), True),
+        (3, WorldConfig(contact_split=True, sleep_time=1.0), True),
         (30, WorldConfig(), False),
     ],
 )
 def test_the_path_follows_the_count_and_the_scene(
     n: int, config: WorldConfig, scalar: bool
 ) -> None:
-    """Law: few tracked bodies with one substep and no contact split are served in plain floats;
-    more than ``scalar_max_bodies``, substeps or the contact split take the batch path."""
+    """Law: few tracked bodies with one substep are served in plain floats, contact split and
+    sleeping included; more than ``scalar_max_bodies`` or substeps take the batch path."""
     world = _pile(n, config)
     world.step()
     assert world.on_scalar_path is scalar
 
 
-def test_a_field_that_varies_takes_the_batch_path() -> None:
-    """Law: a field that varies in space is applied as batch force rows: no scalar path."""
+class _Tilted:
+    """A field of a kind the scalar path does not know: it has no plain-float form."""
+
+    uniform = False
+
+    def at(self, points: NDArray[np.float64], t: float) -> NDArray[np.float64]:
+        return np.column_stack([0.1 * points[:, 1], np.full(len(points), -9.81)])
+
+
+def test_a_field_that_varies_takes_the_scalar_path_for_few_bodies() -> None:
+    """Law: a field that varies in space, of a kind evaluated in plain floats, keeps the scalar
+    path while the named dynamic bodies are few (tracked or not); with more, or with a field of
+    another kind, its forces are batch rows."""
     world = _pile(3)
     world.gravity = Radial(radius=1.0, center=(0.0, -20.0))
+    world.step()
+    assert world.on_scalar_path
+    world.scalar_max_bodies = 3
+    world.add_box("untracked", mass=1.0, size=(0.5, 0.5), position=(20.0, 0.25))
+    world.step()
+    assert not world.on_scalar_path
+    world.remove("untracked")
+    world.step()
+    assert world.on_scalar_path
+    world.gravity = _Tilted()
     world.step()
     assert not world.on_scalar_path
 

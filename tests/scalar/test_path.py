@@ -1,9 +1,11 @@
 """The scalar path stays scalar: a step of a world with one tracked body calls neither numpy nor
-``pymunk.batch`` (counted through patched modules), so the fast path cannot silently regress."""
+``pymunk.batch`` (counted through patched modules), so the fast path cannot silently regress: a
+bare world, a level with the contact split and a level with a field that varies in space."""
 
 from __future__ import annotations
 
-import importlib
+import math
+import sys
 from collections.abc import Callable
 from typing import Any
 
@@ -12,14 +14,18 @@ import pymunk.batch
 import pytest
 
 from playground import Stage, World, WorldConfig
+from playground.gravity import Uniform
 from playground.guard import GUARD_EVERY
+from playground.level import find, load
+from playground.scene import build
+
+TOL_FIELD = 0.01
+"""Relative: the field's force is taken where the player was when the step began; walking at
+1.2 m/s it has since moved 1 cm around a radius of 11 m, which turns the field by 1e-3 rad."""
 
 TOL_SETTLING = 1e-3
 """Relative: the box still settles half a second after it is placed (its support reads
 −0.6 mN sideways on 19.6 N); a thousandth says it reads its weight and feels g."""
-
-CORE = ("_batch", "filters", "forces", "gravity", "guard", "perception", "scalar", "world")
-"""Modules of the step that import numpy as ``np`` (patched with a counting stand-in)."""
 
 
 class Counting:
@@ -43,13 +49,13 @@ class Counting:
 
 
 def counting(monkeypatch: pytest.MonkeyPatch) -> tuple[list[str], list[str]]:
-    """Patch numpy in the step's modules and the batch functions; returns the two call logs."""
+    """Patch numpy in every loaded module of the package that imports it as ``np`` (controller,
+    world stages, solver, filters, ...) and the batch functions; returns the two call logs."""
     np_calls: list[str] = []
     batch_calls: list[str] = []
     stand_in = Counting(numpy, np_calls)
-    for name in CORE:
-        module = importlib.import_module(f"playground.{name}")
-        if hasattr(module, "np"):
+    for name, module in list(sys.modules.items()):
+        if name.startswith("playground.") and getattr(module, "np", None) is numpy:
             monkeypatch.setattr(module, "np", stand_in)
     for name in ("get_space_bodies", "set_space_bodies", "get_space_arbiters"):
         original: Callable[..., Any] = getattr(pymunk.batch, name)
@@ -59,6 +65,17 @@ def counting(monkeypatch: pytest.MonkeyPatch) -> tuple[list[str], list[str]]:
             return _f(*args)
 
         monkeypatch.setattr(pymunk.batch, name, counted)
+    return np_calls, batch_calls
+
+
+def between_checks(world: World, monkeypatch: pytest.MonkeyPatch) -> tuple[list[str], list[str]]:
+    """Step from just after one full check of all bodies (a batch read every GUARD_EVERY steps)
+    to just before the next, counting; returns the numpy and the batch calls."""
+    while world.steps % GUARD_EVERY != 1:
+        world.step()
+    np_calls, batch_calls = counting(monkeypatch)
+    for _ in range(GUARD_EVERY - 2):
+        world.step()
     return np_calls, batch_calls
 
 
@@ -78,11 +95,7 @@ def test_one_tracked_body_steps_without_numpy_or_batch(monkeypatch: pytest.Monke
     world = one_box()
     ran: list[Stage] = []
     world.on(Stage.OBSERVE, lambda w: ran.append(Stage.OBSERVE))
-    while world.steps % GUARD_EVERY != 1:  # start just after a full check
-        world.step()
-    np_calls, batch_calls = counting(monkeypatch)
-    for _ in range(GUARD_EVERY - 2):
-        world.step()
+    np_calls, batch_calls = between_checks(world, monkeypatch)
     assert np_calls == []
     assert batch_calls == []
     # It did the work: a reading and perceived gravity, as the vectorised path gives them.
@@ -103,3 +116,29 @@ def test_the_count_sees_the_vectorised_path(monkeypatch: pytest.MonkeyPatch) -> 
     np_calls, batch_calls = counting(monkeypatch)
     world.step()
     assert np_calls and batch_calls
+
+
+@pytest.mark.parametrize("level", ["rest", "planet"])
+def test_a_one_player_level_steps_without_numpy_or_batch(
+    level: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Law: between full checks, a step of ``rest`` (the contact split on) and of ``planet`` (a
+    radial field: a force per body) with its one player makes no numpy call and no batch call,
+    controller included, and reads the split or the field."""
+    world = build(load(find(level))).world
+    assert len(world.solver.bodies) == 1
+    # What the level asks of the step: the case this test is for.
+    if level == "rest":
+        assert world.config.contact_split
+    else:
+        assert not isinstance(world.gravity, Uniform) and not world.gravity.uniform
+    assert between_checks(world, monkeypatch) == ([], [])
+    assert world.on_scalar_path
+    f = world.forces("player")
+    assert f.valid
+    if level == "rest":  # hovering: nothing touches the player, a known split of zero
+        assert f.split_valid and f.contact == (0.0, 0.0)
+    else:  # the field's pull on the player (0.83 g where it hovers) is its passive force
+        m = world.body("player").mass
+        gx, gy = world.gravity_at("player")
+        assert math.dist(f.passive, (m * gx, m * gy)) <= TOL_FIELD * m * math.hypot(gx, gy)

@@ -7,28 +7,30 @@ count, so below :data:`SCALAR_MAX_BODIES` tracked bodies the vectorised
 tracked body's attributes, does the same arithmetic in the same order in Python floats and
 filters with the same 1€ (and median-of-3) equations, so both paths give the same readings (to a
 unit in the last place: magnitudes come from ``math.hypot`` here and from numpy's complex ``abs``
-there).
+there). The contact split sums each body's arbiters (:mod:`playground.scalar.contacts`); a field
+that varies in space reaches the bodies as forces computed in plain floats
+(:mod:`playground.scalar.field`).
 
 The world switches between the paths at a plan change; the state moves with it
-(:meth:`ScalarPath.load` and :meth:`ScalarPath.store`), so a run gives one answer whichever path
-served each step.
+(:meth:`ScalarPath.load` and :meth:`ScalarPath.store`, see :mod:`playground.scalar.handoff`), so
+a run gives one answer whichever path served each step.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
-import numpy as np
 import pymunk
 
-from playground.filters.chain import FilterChain
-from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
 from playground.forces.ledger import ForceLedger
 from playground.forces.readings import BodyForces
 from playground.forces.solver import ForceSolver
 from playground.perception import PerceivedGravity
+from playground.scalar import handoff
+from playground.scalar.contacts import ContactSums
+from playground.scalar.row import Row
 
 __all__ = ["SCALAR_MAX_BODIES", "ScalarPath"]
 
@@ -40,82 +42,18 @@ at 16 and 1.1× at 24 (``playground bench overhead`` measures it again: docs/per
 _NAN = math.nan
 
 Vec = tuple[float, float]
-
-
-class _Row:
-    """One tracked body's per-step state and readings, in plain floats."""
-
-    __slots__ = (
-        "at",
-        "ax",
-        "ay",
-        "body",
-        "dxh",
-        "dyh",
-        "et",
-        "ex",
-        "ey",
-        "ft",
-        "fx",
-        "fy",
-        "gx",
-        "gy",
-        "i_dt",
-        "inv_m",
-        "locked",
-        "m",
-        "m_dt",
-        "m_started",
-        "moment",
-        "px",
-        "py",
-        "s0",
-        "s1",
-        "s2",
-        "seen",
-        "sp",
-        "st",
-        "started",
-        "sx",
-        "sy",
-        "ux",
-        "uy",
-        "v0w",
-        "v0x",
-        "v0y",
-        "valid",
-        "vw",
-        "vx",
-        "vy",
-        "xh",
-        "yh",
-    )  # fmt: skip
-
-    def __init__(self, body: pymunk.Body) -> None:
-        self.body = body
-        self.m = self.moment = self.inv_m = self.m_dt = self.i_dt = 0.0
-        self.locked = False
-        self.v0x = self.v0y = self.v0w = self.vx = self.vy = self.vw = 0.0
-        self.fx = self.fy = self.ft = 0.0
-        self.seen = self.valid = False
-        # readings: engine (x, y, torque), support, specific, passive, applied
-        self.ex = self.ey = self.et = 0.0
-        self.sx = self.sy = self.st = 0.0
-        self.sp = (0.0, 0.0)
-        self.px = self.py = 0.0
-        self.ax = self.ay = self.at = 0.0
-        # filter: 1€ state (X̂, Ẋ̂), median-of-3 window, perceived gravity and up
-        self.started = self.m_started = False
-        self.xh = self.yh = self.dxh = self.dyh = 0.0
-        self.s0 = self.s1 = self.s2 = (0.0, 0.0)
-        self.gx = self.gy = 0.0
-        self.ux = self.uy = _NAN
+FieldOnBodies = Mapping[pymunk.Body, Vec]
+"""A field's force (N) on each body it acts on this step."""
 
 
 class ScalarPath:
     """Readings and perceived gravity of a few tracked bodies, one body at a time.
 
+    ``contact_split`` and ``check_sleep`` mean what they mean for
+    :class:`~playground.forces.solver.ForceSolver`.
+
     >>> from playground.perception import Perception
+    >>> import numpy as np
     >>> space = pymunk.Space()
     >>> body = pymunk.Body(2.0, 1.0)
     >>> space.add(body, pymunk.Circle(body, 0.5))
@@ -126,87 +64,34 @@ class ScalarPath:
     >>> path.load(solver, perceived)
     >>> path.before_step()
     >>> space.step(0.01)
-    >>> path.after_substep(check_sleep=False)
+    >>> path.after_substep(space)
     >>> path.finish(dt=0.01, damping=1.0, space_gravity=(0.0, 0.0), ledger=ForceLedger())
     >>> path.rows[0].ex, path.rows[0].valid  # free body: the engine did nothing
     (0.0, True)
     """
 
-    def __init__(self) -> None:
-        self.rows: list[_Row] = []
+    def __init__(self, *, contact_split: bool = False, check_sleep: bool = False) -> None:
+        self.contact_split = contact_split
+        self.check_sleep = check_sleep
+        self.rows: list[Row] = []
         self._one_euro: OneEuroFilter | None = None
         self._median = False
-        self._weight_g: tuple[float, float] = (_NAN, _NAN)
         self._dt = _NAN
+        self._field = False
+        self._contacts = ContactSums()
 
     # -- hand-off with the vectorised path ----------------------------------------------------
 
     def load(self, solver: ForceSolver, perceived: PerceivedGravity) -> None:
         """Take over the state of the vectorised path (at a plan change, not per step)."""
-        if solver._keys_dirty:
-            solver._rebuild_keys()
-        self.rows = []
-        chain = perceived._filter
-        stages = chain.stages if isinstance(chain, FilterChain) else (chain,)
-        median = next((s for s in stages if isinstance(s, Median3)), None)
-        one_euro = next(s for s in stages if isinstance(s, OneEuroFilter))
-        self._one_euro = one_euro
-        self._median = median is not None
-        for i, body in enumerate(solver.bodies):
-            r = _Row(body)
-            r.ex, r.ey, r.et = (float(v) for v in solver._engine3[i])
-            r.sx, r.sy, r.st = (float(v) for v in solver._support3[i])
-            r.sp = (float(solver._specific2[i, 0]), float(solver._specific2[i, 1]))
-            r.px, r.py = float(solver._passive3[i, 0]), float(solver._passive3[i, 1])
-            r.ax, r.ay, r.at = (float(v) for v in solver._applied3[i])
-            r.valid = bool(solver.valid[i])
-            r.gx, r.gy = float(perceived.gravity[i, 0]), float(perceived.gravity[i, 1])
-            r.ux, r.uy = float(perceived.up[i, 0]), float(perceived.up[i, 1])
-            if one_euro._shape is not None and one_euro._init[i]:
-                r.started = True
-                r.xh, r.yh = _xy(one_euro._xh[i])
-                r.dxh, r.dyh = _xy(one_euro._dxh[i])
-            if median is not None and median._shape is not None and median._init[i]:
-                r.m_started = True
-                r.s0, r.s1, r.s2 = _xy(median._s0[i]), _xy(median._s1[i]), _xy(median._s2[i])
-            self.rows.append(r)
+        self.rows, self._one_euro, self._median, history = handoff.load(solver, perceived)
+        self._contacts.history = history
         self.refresh_masses()
 
     def store(self, solver: ForceSolver, perceived: PerceivedGravity) -> None:
         """Hand the state back to the vectorised path (at a plan change, or before a read of its
         arrays)."""
-        n = len(self.rows)
-        if n == 0:
-            return
-        for i, r in enumerate(self.rows):
-            solver._engine3[i] = (r.ex, r.ey, r.et)
-            solver._support3[i] = (r.sx, r.sy, r.st)
-            solver._specific2[i] = r.sp
-            solver._passive3[i] = (r.px, r.py, 0.0)
-            solver._applied3[i] = (r.ax, r.ay, r.at)
-            solver.valid[i] = r.valid
-        if any(r.started for r in self.rows):
-            chain = perceived._filter
-            shape = np.zeros((n, 2))
-            for stage in chain.stages if isinstance(chain, FilterChain) else (chain,):
-                if not isinstance(stage, OneEuroFilter | Median3):
-                    continue
-                if stage._shape is None:
-                    stage._fix_shape(shape)  # allocates every row, none started
-                for i, r in enumerate(self.rows):
-                    if isinstance(stage, OneEuroFilter) and r.started:
-                        stage._xh[i] = complex(r.xh, r.yh)
-                        stage._dxh[i] = complex(r.dxh, r.dyh)
-                        stage._init[i] = True
-                    elif isinstance(stage, Median3) and r.m_started:
-                        stage._s0[i] = complex(*r.s0)
-                        stage._s1[i] = complex(*r.s1)
-                        stage._s2[i] = complex(*r.s2)
-                        stage._init[i] = True
-                stage._all_init = bool(stage._init.all())
-        perceived.gravity = np.array([(r.gx, r.gy) for r in self.rows], dtype=float)
-        perceived.up = np.array([(r.ux, r.uy) for r in self.rows], dtype=float)
-        perceived.up_complete = all(math.isfinite(r.ux) for r in self.rows)
+        handoff.store(self.rows, self._contacts.history, solver, perceived)
 
     def refresh_masses(self) -> None:
         """Re-read mass (kg) and moment (kg·m²) of every row (after a mass change)."""
@@ -219,8 +104,11 @@ class ScalarPath:
 
     # -- per step (the order of ForceSolver's arithmetic, float by float) ----------------------
 
-    def before_step(self) -> None:
-        """v₀, ω₀ and the forces about to be integrated, read from each body."""
+    def before_step(self, field: FieldOnBodies | None = None) -> None:
+        """v₀, ω₀ and the forces about to be integrated, read from each body; ``field``: the
+        force of a field that varies in space on each body, included in those forces."""
+        self._field = field is not None
+        split = self.contact_split
         for r in self.rows:
             b = r.body
             r.v0x, r.v0y = b.velocity
@@ -228,15 +116,25 @@ class ScalarPath:
             r.fx, r.fy = b.force
             r.ft = b.torque
             r.seen = True
+            if field is not None:
+                r.ffx, r.ffy = field.get(b, (0.0, 0.0))
+            if split:
+                r.jx = r.jy = r.jnx = r.jny = 0.0
+                r.unknown = False
 
-    def after_substep(self, *, check_sleep: bool) -> None:
-        """Velocities after the (single) substep; a body asleep after it has no reading."""
+    def after_substep(self, space: pymunk.Space, *, stamp: int = 0, rescaled: bool = False) -> None:
+        """Velocities after the (single) substep; a body asleep after it has no reading. With the
+        contact split, its arbiter impulses (``stamp``, ``rescaled``: see
+        :meth:`ForceSolver.after_substep`)."""
+        check_sleep = self.check_sleep
         for r in self.rows:
             b = r.body
             r.vx, r.vy = b.velocity
             r.vw = b.angular_velocity
             if check_sleep and b.is_sleeping:
                 r.seen = False
+        if self.contact_split:
+            self._contacts.accumulate(self.rows, space, stamp, rescaled)
 
     def finish(
         self, *, dt: float, damping: float, space_gravity: tuple[float, float], ledger: ForceLedger
@@ -249,6 +147,7 @@ class ScalarPath:
             self._dt = dt
         d = damping**dt
         gx, gy = space_gravity
+        field = self._field
         parts = {body_id: p for body_id, p in ledger.items()} if len(ledger) else None
         for r in self.rows:
             if not r.seen:
@@ -268,6 +167,11 @@ class ScalarPath:
             et = 0.0 if r.locked else dvw * r.i_dt - r.ft - 0.0
             px, py = wx, wy
             ax, ay, at = r.fx, r.fy, r.ft
+            if field:
+                px += r.ffx
+                py += r.ffy
+                ax -= r.ffx
+                ay -= r.ffy
             sx, sy, st = ex, ey, et
             if parts is not None:
                 p = parts.get(r.body.id)
@@ -284,6 +188,12 @@ class ScalarPath:
             r.sx, r.sy, r.st = sx, sy, st
             r.sp = (sx * r.inv_m, sy * r.inv_m)
             r.valid = True
+        if self.contact_split:
+            _split(self.rows, dt)
+        elif any(r.split for r in self.rows):  # the split was just turned off
+            for r in self.rows:
+                r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
+                r.split = False
 
     def filter(self, dt: float, threshold: float, up_default: Callable[[pymunk.Body], Vec]) -> None:
         """Perceived gravity: −specific force through median-of-3 and 1€, and the up, held while
@@ -354,9 +264,8 @@ class ScalarPath:
         return (r.ux, r.uy)
 
     def reading(self, row: int) -> BodyForces:
-        """The readings of a row as :meth:`ForceSolver.reading` gives them (no contact split)."""
+        """The readings of a row as :meth:`ForceSolver.reading` gives them."""
         r = self.rows[row]
-        nan2 = (_NAN, _NAN)
         return BodyForces(
             valid=r.valid,
             engine=(r.ex, r.ey),
@@ -365,19 +274,31 @@ class ScalarPath:
             specific=r.sp,
             passive=(r.px, r.py),
             applied=(r.ax, r.ay),
-            contact=nan2,
-            contact_normal=nan2,
-            contact_friction=nan2,
-            constraint=nan2,
-            split_valid=False,
+            contact=(r.cx, r.cy),
+            contact_normal=(r.cnx, r.cny),
+            contact_friction=(r.cx - r.cnx, r.cy - r.cny),
+            constraint=(r.kx, r.ky),
+            split_valid=r.split,
         )
 
 
-def _xy(z: complex) -> tuple[float, float]:
-    return float(z.real), float(z.imag)
+def _split(rows: list[Row], dt: float) -> None:
+    """Contact, its normal part and the constraint's part of each row read this step (N); NaN
+    where an arbiter may report an impulse not applied; rows not read keep their last values."""
+    for r in rows:
+        if not r.seen:
+            continue
+        if r.unknown:
+            r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
+            r.split = False
+            continue
+        r.cx, r.cy = r.jx / dt, r.jy / dt
+        r.cnx, r.cny = r.jnx / dt, r.jny / dt
+        r.kx, r.ky = r.ex - r.cx, r.ey - r.cy
+        r.split = True
 
 
-def _median_step(r: _Row, x: float, y: float) -> tuple[float, float]:
+def _median_step(r: Row, x: float, y: float) -> tuple[float, float]:
     """Push (x, y) into the row's window and return the vector median (Median3's rule)."""
     if not r.m_started:
         r.s0 = r.s1 = r.s2 = (x, y)
