@@ -29,6 +29,7 @@ from playground.limits import (
     MAX_LENGTH,
     MAX_TIME,
 )
+from playground.vec import Vec
 
 __all__ = [
     "STANDARD_GRAVITY",
@@ -45,7 +46,6 @@ __all__ = [
 STANDARD_GRAVITY = 9.81
 """Magnitude of Earth's surface gravity, m/s²."""
 
-Vec = tuple[float, float]
 Points = NDArray[np.float64]
 
 

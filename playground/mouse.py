@@ -37,15 +37,13 @@ import pymunk
 
 from playground.controller.spring import hover_spring
 from playground.forces.ledger import Category
+from playground.gravity import STANDARD_GRAVITY
+from playground.vec import Vec
 
 if TYPE_CHECKING:
     from playground.world.world import World
 
-__all__ = ["G0", "Grab", "MouseSpring", "Pull"]
-
-Vec = tuple[float, float]
-
-G0 = 9.81  # m/s²: the reference weight per kilogram for the force cap
+__all__ = ["Grab", "MouseSpring", "Pull"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,8 +73,9 @@ class MouseSpring:
     Attributes:
         frequency: natural frequency of the spring on the grabbed point, Hz.
         damping_ratio: 1 is critical (no overshoot).
-        max_weights: the force cap, in weights of the grabbed body (m·g₀): enough to lift and
-            throw it, not enough to tear it through a wall in one step.
+        max_weights: the force cap, in weights of the grabbed body (m·g₀, g₀ the standard
+            gravity): enough to lift and throw it, not enough to tear it through a wall in one
+            step.
         spin_damping: γ, the rate at which the grabbed body's spin decays, 1/s.
         step_limit: the largest ω·dt at the grabbed point (ω is lowered at large dt).
         spin_limit: the largest γ·dt (the spin damping is explicit: stable below 2).
@@ -104,7 +103,7 @@ class MouseSpring:
         c_damp = 2.0 * self.damping_ratio * m * omega
         fx = hover_spring(k, c_damp, m, target[0] - p.x, vx, dt)
         fy = hover_spring(k, c_damp, m, target[1] - p.y, vy, dt)
-        cap = self.max_weights * body.mass * G0
+        cap = self.max_weights * body.mass * STANDARD_GRAVITY
         n = math.hypot(fx, fy)
         if n > cap:
             fx, fy = fx * cap / n, fy * cap / n

@@ -20,10 +20,10 @@ from typing import Literal, Protocol, runtime_checkable
 import pymunk
 
 from playground._validate import finite, finite_vec, positive
+from playground.vec import Vec
 
 __all__ = ["Circle", "Elevator", "Mover", "Path", "Sine", "Spin", "Waypoints", "ring_room"]
 
-Vec = tuple[float, float]
 Pose = tuple[Vec, float]
 
 

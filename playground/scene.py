@@ -41,6 +41,7 @@ from playground.level.timeline import (
 )
 from playground.limits import MAX_MASS_RATIO, MAX_OVERLAP, SPRING_LIMIT
 from playground.perception import Perception
+from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.world import World
 
@@ -48,8 +49,6 @@ if TYPE_CHECKING:
     from playground.controller.controller import Controller
 
 __all__ = ["Scene", "build"]
-
-Vec = tuple[float, float]
 
 
 class Scene:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import pymunk
 
-from playground.gravity import GravityField
+from playground.gravity import STANDARD_GRAVITY, GravityField
 from playground.world.config import WorldConfig
 from playground.world.world import World
 
@@ -46,7 +46,7 @@ def pile_space(n: int, config: WorldConfig) -> pymunk.Space:
     space.iterations = config.iterations
     space.collision_slop = config.collision_slop
     space.collision_persistence = 1
-    space.gravity = (0.0, -9.81)
+    space.gravity = (0.0, -STANDARD_GRAVITY)
     seg = pymunk.Segment(space.static_body, (-2.0, -0.05), (floor_length(n), -0.05), 0.05)
     seg.friction = 1.0
     space.add(seg)

@@ -27,12 +27,11 @@ from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
 from playground.gravity import STANDARD_GRAVITY
 from playground.movers import Elevator, Spin, ring_room
+from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.world import World
 
 __all__ = ["SCENES", "Knobs", "Scene", "build", "hover_exact"]
-
-Vec = tuple[float, float]
 
 PLAYER_MASS = 70.0
 """Mass of the measured body, kg (an adult player)."""

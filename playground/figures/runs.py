@@ -10,14 +10,15 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from playground.gravity import STANDARD_GRAVITY
 from playground.level.document import Level
 from playground.scene import Scene
 from playground.world.world import World
 
 Array = NDArray[np.float64]
 
-G = 9.81
-"""Standard gravity of the levels, m/s²."""
+G = STANDARD_GRAVITY
+"""Standard gravity of the levels, m/s² (short for the chapters' formulas)."""
 
 DT = 1.0 / 120.0
 """The levels' step, s."""

@@ -13,9 +13,9 @@ from enum import Enum
 
 import pymunk
 
-__all__ = ["Category", "ForceLedger"]
+from playground.vec import Vec
 
-Vec = tuple[float, float]
+__all__ = ["Category", "ForceLedger"]
 
 
 class Category(Enum):

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["BodyForces"]
+from playground.vec import Vec
 
-Vec = tuple[float, float]
+__all__ = ["BodyForces"]
 
 
 @dataclass(frozen=True, slots=True)

@@ -22,10 +22,9 @@ from playground.forces.contact_split import ContactSplit
 from playground.forces.ledger import ForceLedger
 from playground.forces.readings import BodyForces
 from playground.forces.tracking import TrackedRows
+from playground.vec import Vec
 
 __all__ = ["ForceSolver"]
-
-Vec = tuple[float, float]
 
 
 def _vec(a: NDArray[np.float64]) -> Vec:

@@ -8,6 +8,7 @@ from typing import Annotated, Literal
 from pydantic import ConfigDict, Field, Strict, field_validator
 
 from playground import limits
+from playground.gravity import STANDARD_GRAVITY
 from playground.level.values import Finite, Gravity_, NonNegative, Positive, Table, TurnRate, Vec
 
 
@@ -19,7 +20,7 @@ class UniformGravity(Table):
     model_config = ConfigDict(json_schema_extra={"required": ["kind"]})
 
     kind: Literal["uniform"] = "uniform"
-    g: Annotated[tuple[Gravity_, Gravity_], Strict(False)] = (0.0, -9.81)
+    g: Annotated[tuple[Gravity_, Gravity_], Strict(False)] = (0.0, -STANDARD_GRAVITY)
 
 
 class Turn(Table):
@@ -34,7 +35,7 @@ class RotatingGravity(Table):
     """Uniform gravity whose direction turns (rad from +x; −π/2 is down)."""
 
     kind: Literal["rotating"]
-    magnitude: Annotated[float, Field(ge=0.0, le=limits.MAX_GRAVITY)] = 9.81
+    magnitude: Annotated[float, Field(ge=0.0, le=limits.MAX_GRAVITY)] = STANDARD_GRAVITY
     angle: Finite = -math.pi / 2
     rate: TurnRate = Field(default=0.0, description="Constant turning rate, rad/s.")
     turns: list[Turn] = Field(default_factory=list)
@@ -45,7 +46,7 @@ class RadialGravity(Table):
 
     kind: Literal["radial"]
     center: Vec = (0.0, 0.0)
-    surface_gravity: Gravity_ = 9.81
+    surface_gravity: Gravity_ = STANDARD_GRAVITY
     radius: Positive = 10.0
     softening: NonNegative = 0.5
 

@@ -29,10 +29,9 @@ from collections.abc import Callable, Mapping, Sequence
 import pymunk
 
 from playground.gravity import GravityField, GravityRule, Radial, RotatingRoom, Uniform, Zones
+from playground.vec import Vec
 
 __all__ = ["PlainField", "PointField", "point_field", "ruled"]
-
-Vec = tuple[float, float]
 PointField = Callable[[float, float, float], Vec]
 """Acceleration (m/s²) at the point (x, y) (m) at time t (s)."""
 

@@ -31,6 +31,7 @@ from playground.perception import PerceivedGravity
 from playground.scalar import handoff
 from playground.scalar.contacts import ContactSums
 from playground.scalar.row import Row
+from playground.vec import Vec
 
 __all__ = ["SCALAR_MAX_BODIES", "ScalarPath"]
 
@@ -40,8 +41,6 @@ tracked and perceived, a step on the scalar path costs 0.13× the vectorised one
 at 16 and 1.1× at 24 (``playground bench overhead`` measures it again: docs/performance.md)."""
 
 _NAN = math.nan
-
-Vec = tuple[float, float]
 FieldOnBodies = Mapping[pymunk.Body, Vec]
 """A field's force (N) on each body it acts on this step."""
 

@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 
 import pymunk
 
+from playground.vec import Vec
 from playground.world.world import World
 
 __all__ = [
@@ -41,8 +42,6 @@ __all__ = [
     "spread",
     "weight_pixels",
 ]
-
-Vec = tuple[float, float]
 
 G0 = 9.81  # m/s²: the reference weight per kilogram for arrow scaling
 WEIGHT_BODY = 0.8  # one weight is this many times the body's size on screen …

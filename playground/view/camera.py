@@ -17,9 +17,9 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["Camera"]
+from playground.vec import Vec
 
-Vec = tuple[float, float]
+__all__ = ["Camera"]
 
 MIN_ZOOM = 2.0  # px/m: a 1 km level still fits a window
 MAX_ZOOM = 1000.0  # px/m: a 1 mm detail is still a pixel

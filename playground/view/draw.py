@@ -21,6 +21,7 @@ import pygame
 import pygame.gfxdraw
 import pymunk
 
+from playground.vec import Vec
 from playground.view.camera import Camera
 from playground.world.world import World
 
@@ -37,8 +38,6 @@ __all__ = [
     "draw_world",
     "outlined_polygon",
 ]
-
-Vec = tuple[float, float]
 Colour = tuple[int, int, int]
 
 COORD_LIMIT = 1.0e5  # px: points are clamped here so far-away geometry never overflows SDL

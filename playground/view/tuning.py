@@ -23,11 +23,10 @@ from typing import Any
 import pygame
 
 from playground.controller.spring import hover_limit
+from playground.vec import Vec
 from playground.view.draw import COLOURS
 
 __all__ = ["SAFE_FRACTION", "SLIDERS", "Knobs", "Slider", "TuningPanel"]
-
-Vec = tuple[float, float]
 
 SAFE_FRACTION = 0.98  # the hover frequency stays below this share of its stability limit
 TRACK_PX = 160  # px: length of a slider's track

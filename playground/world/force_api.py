@@ -17,13 +17,12 @@ from playground._validate import bounded, bounded_vec
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.readings import BodyForces
 from playground.limits import MAX_COORDINATE, MAX_IMPULSE, RUNAWAY_FORCE
+from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.physics import PhysicsStage
 from playground.world.registry import BodyRegistry
 
 __all__ = ["ForceAPI"]
-
-Vec = tuple[float, float]
 
 
 class ForceAPI(BodyRegistry):

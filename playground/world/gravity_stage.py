@@ -31,10 +31,9 @@ from playground.forces.ledger import Category, ForceLedger
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
 from playground.scalar.field import PlainField, PointField, point_field, ruled
 from playground.scalar.path import FieldOnBodies
+from playground.vec import Vec
 
 __all__ = ["FieldForces", "GravityStage"]
-
-Vec = tuple[float, float]
 FieldForces = tuple[NDArray[np.uintp], NDArray[np.float64]]
 """The body ids of one batch read and the field's force (N) on each, one (fx, fy) row per id."""
 

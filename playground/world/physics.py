@@ -28,12 +28,11 @@ from playground.limits import RUNAWAY_FORCE
 from playground.perception import PerceivedGravity
 from playground.scalar.field import PlainField
 from playground.scalar.path import FieldOnBodies, ScalarPath
+from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.gravity_stage import FieldForces
 
 __all__ = ["PhysicsStage"]
-
-Vec = tuple[float, float]
 
 
 class PhysicsStage:

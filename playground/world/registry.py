@@ -18,11 +18,10 @@ import pymunk
 
 from playground._validate import bounded, bounded_vec, finite, in_range
 from playground.limits import MAX_ANGLE, MAX_COORDINATE, MAX_LENGTH, MAX_MASS, MIN_MASS
+from playground.vec import Vec
 from playground.world.bodies import check_body, check_size, check_surface, group, surfaced
 
 __all__ = ["BodyRegistry"]
-
-Vec = tuple[float, float]
 
 
 class BodyRegistry:

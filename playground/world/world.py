@@ -43,6 +43,7 @@ from playground.limits import (
 from playground.movers import Mover, Path
 from playground.perception import PerceivedGravity, Perception
 from playground.scalar.path import SCALAR_MAX_BODIES
+from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.force_api import ForceAPI
 from playground.world.gravity_stage import GravityStage
@@ -57,8 +58,6 @@ from playground.world.schedule import (
 )
 
 __all__ = ["World"]
-
-Vec = tuple[float, float]
 
 _NEVER = 2**62
 """A step number no run reaches: the guard's next check when the guard is off."""
