@@ -32,7 +32,7 @@ from playground import movers as movers_mod
 from playground import perception as perception_mod
 from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
-from playground.forces import Category
+from playground.forces.ledger import Category
 from playground.gravity import GravityRule
 from playground.level.document import Level
 from playground.world import force_api, gravity_stage

@@ -1,5 +1,5 @@
-"""Plane vectors as plain float pairs, the controller's currency: a Vec2d read from pymunk is
-copied into one at once (each read builds a new Vec2d).
+"""Helpers on plane vectors (:data:`playground.vec.Vec`, plain float pairs), the controller's
+currency: a Vec2d read from pymunk is copied into one at once (each read builds a new Vec2d).
 
 >>> unit_or(3.0, 4.0, ZERO)
 (0.6, 0.8)
@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["ZERO", "Vec", "scaled", "unit_or"]
+from playground.vec import Vec
 
-Vec = tuple[float, float]
+__all__ = ["ZERO", "scaled", "unit_or"]
+
 ZERO: Vec = (0.0, 0.0)
 
 

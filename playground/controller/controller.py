@@ -19,13 +19,14 @@ import pymunk
 
 from playground._validate import finite
 from playground.controller import grab, laws, sensing, states, switches
-from playground.controller._vec import Vec, unit_or
+from playground.controller._vec import unit_or
 from playground.controller.config import ControllerConfig
 from playground.controller.laws import NO_FORCES, ControllerForces
 from playground.controller.sensing import GroundHit
 from playground.controller.spring import TWO_PI, stable_hover
 from playground.controller.states import State
 from playground.intents import IDLE, Intent, IntentSource
+from playground.vec import Vec
 from playground.world.schedule import Stage
 from playground.world.world import World
 

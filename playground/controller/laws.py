@@ -16,10 +16,11 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground.controller._vec import ZERO, Vec, scaled, unit_or
+from playground.controller._vec import ZERO, scaled, unit_or
 from playground.controller.spring import hover_spring
 from playground.controller.states import State
 from playground.forces.ledger import Category
+from playground.vec import Vec
 from playground.world.world import World
 
 if TYPE_CHECKING:

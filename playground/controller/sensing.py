@@ -13,8 +13,9 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground.controller._vec import ZERO, Vec, unit_or
+from playground.controller._vec import ZERO, unit_or
 from playground.controller.states import State
+from playground.vec import Vec
 from playground.world.world import World
 
 if TYPE_CHECKING:
