@@ -23,7 +23,8 @@ import numpy as np
 
 from playground.filters import FilterChain, Median3, OneEuroFilter
 from playground.level.document import Level
-from playground.level.expect import CONTROLLER_QUANTITIES, Expectation, Reading
+from playground.level.expect import Expectation, Reading
+from playground.quantities import CHECKED, QUANTITIES
 from playground.scene import Scene
 from playground.world.schedule import Stage
 from playground.world.world import World
@@ -32,25 +33,7 @@ __all__ = ["UNITS", "Check", "CheckResult", "Checks", "check_names", "read", "wa
 
 Value = float | tuple[float, float] | str
 
-UNITS = {
-    "position": "m",
-    "velocity": "m/s",
-    "angle": "rad",
-    "angular_velocity": "rad/s",
-    "tilt": "rad",
-    "state": "",
-    "engine": "N",
-    "contact": "N",
-    "constraint": "N",
-    "contact_normal": "N",
-    "contact_friction": "N",
-    "support": "N",
-    "perceived_gravity": "m/s²",
-    "hover": "N",
-    "drive": "N",
-    "grip": "N",
-    "push": "N",
-}
+UNITS = {q.name: q.unit for q in CHECKED}
 """The unit of each quantity, for messages."""
 
 
@@ -64,29 +47,9 @@ class CheckResult:
 
 
 def read(scene: Scene, body: str, quantity: str) -> Value:
-    """The current value of a quantity of a body (raw readings; SI)."""
-    world = scene.world
-    if quantity == "state":
-        return scene.state(body) or ""
-    if quantity == "tilt":
-        return scene.tilt(body)
-    b = world.body(body)
-    if quantity == "position":
-        return (float(b.position.x), float(b.position.y))
-    if quantity == "velocity":
-        return (float(b.velocity.x), float(b.velocity.y))
-    if quantity == "angle":
-        return float(b.angle)
-    if quantity == "angular_velocity":
-        return float(b.angular_velocity)
-    if quantity == "perceived_gravity":
-        return world.perceived_gravity(body)
-    if quantity in CONTROLLER_QUANTITIES:
-        mine: tuple[float, float] = getattr(scene.controllers[body].last_forces, quantity)
-        return mine
-    forces = world.forces(body)
-    vec: tuple[float, float] = getattr(forces, quantity)
-    return vec
+    """The current value of a quantity of a body (raw readings; SI; "" for no state)."""
+    value = QUANTITIES[quantity].read(scene, body)
+    return "" if value is None else value
 
 
 def name_of(exp: Expectation) -> str:

@@ -45,37 +45,17 @@ import numpy as np
 from numpy.typing import NDArray
 
 from playground.controller.states import State
+from playground.quantities import RECORDED, Quantity, Value, sample
 from playground.scene import Scene
 from playground.world.schedule import Stage
 from playground.world.world import World
 
 __all__ = ["COLUMNS", "PARTIAL", "Recorder", "check_output", "read", "recording"]
 
-COLUMNS = (
-    "time",
-    "body",
-    "x",
-    "y",
-    "vx",
-    "vy",
-    "angle",
-    "engine_x",
-    "engine_y",
-    "contact_x",
-    "contact_y",
-    "constraint_x",
-    "constraint_y",
-    "support_x",
-    "support_y",
-    "support_filtered_x",
-    "support_filtered_y",
-    "perceived_gravity_x",
-    "perceived_gravity_y",
-    "state",
-)
+COLUMNS = ("time", "body", *(column for q in RECORDED for column in q.columns))
 """The columns, in order; ``state`` is empty for a body without a controller."""
 
-TEXT_COLUMNS = ("body", "state")
+TEXT_COLUMNS = ("body", *(c for q in RECORDED if q.kind == "text" for c in q.columns))
 """Columns of names; the partial file stores their index in the header's lists."""
 
 PARTIAL = ".partial"
@@ -140,33 +120,10 @@ class Recorder:
 
     def _row(self, name: str) -> Row:
         scene = self.scene
-        world = scene.world
-        body = world.body(name)
-        f = world.forces(name)
-        perceiving = True
-        try:
-            pg = world.perceived_gravity(name)
-        except KeyError:
-            perceiving = False
-        if not perceiving:
-            pg = (math.nan, math.nan)
-        sf = scene.support_filtered(name) if perceiving else (math.nan, math.nan)
-        return (
-            world.time,
-            name,
-            body.position.x,
-            body.position.y,
-            body.velocity.x,
-            body.velocity.y,
-            body.angle,
-            *f.engine,
-            *f.contact,
-            *f.constraint,
-            *f.support,
-            *sf,
-            *pg,
-            scene.state(name) or "",
-        )
+        row: tuple[float | str, ...] = (scene.world.time, name)
+        for q in RECORDED:
+            row += _cells(q, sample(q, scene, name))
+        return row
 
     def observe(self, world: World) -> None:
         """Record the current step (a world hook): one write and one flush per step."""
@@ -203,6 +160,13 @@ class Recorder:
             self._raw.close()
             _npz_from_partial(_partial(self.path), self.path)
             _partial(self.path).unlink()
+
+
+def _cells(q: Quantity, value: Value) -> Row:
+    """A reading as its columns: NaN (numbers) or "" (text) where the body has none."""
+    if value is None:
+        return ("",) if q.kind == "text" else (math.nan,) * len(q.columns)
+    return value if isinstance(value, tuple) else (value,)
 
 
 class _Lines:

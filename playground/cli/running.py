@@ -5,14 +5,15 @@ its player, a progress bar and a profile.
 
     {"level", "dt", "steps", "sim_seconds", "wall_seconds",
      "checks": [{"name", "passed", "detail"}],
-     "bodies": {NAME: {"mass", "position", "velocity", "angle", "state",
+     "bodies": {NAME: {"mass", "position", "velocity", "angle",
                        "force": {"engine", "contact", "constraint", "support", "support_filtered"},
-                       "perceived_gravity"}}}
+                       "perceived_gravity", "state"}}}
 
-for every tracked body, at the last step, SI units, vectors as ``[x, y]``. ``state`` is null for a
-body without a controller; ``contact`` and ``constraint`` are null unless the level sets
-``settings.contact_split``, and on a step whose split is unknown; ``support_filtered`` is
-−m · ``perceived_gravity`` (the 1€-filtered support force).
+for every tracked body, at the last step, SI units, vectors as ``[x, y]``: the quantities of
+:data:`playground.quantities.REPORTED`, read as a recording and the level's checks read them.
+``state`` is null for a body without a controller; ``contact`` and ``constraint`` are null unless
+the level sets ``settings.contact_split``, and on a step whose split is unknown;
+``support_filtered`` is −m · ``perceived_gravity`` (the 1€-filtered support force).
 """
 
 from __future__ import annotations
@@ -33,6 +34,7 @@ from playground.guard import RunawayError
 from playground.level.files import find
 from playground.level.loading import load
 from playground.limits import MAX_DT, MAX_SECONDS, MAX_TIME, MIN_DT
+from playground.quantities import REPORTED, Value, sample
 
 __all__ = ["PROGRESS_MIN_STEPS", "cmd_run", "configure"]
 
@@ -92,25 +94,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     world = scene.world
     profile = _profile(path, seconds) if args.profile else []
     if args.json:
-        bodies: dict[str, Any] = {}
-        for name in scene.tracked:
-            body = world.body(name)
-            f = world.forces(name)
-            bodies[name] = {
-                "mass": body.mass,
-                "position": _vec(body.position),
-                "velocity": _vec(body.velocity),
-                "angle": _num(body.angle),
-                "state": scene.state(name),
-                "force": {
-                    "engine": _vec(f.engine),
-                    "contact": _vec(f.contact),
-                    "constraint": _vec(f.constraint),
-                    "support": _vec(f.support),
-                    "support_filtered": _vec(scene.support_filtered(name)),
-                },
-                "perceived_gravity": _vec(world.perceived_gravity(name)),
-            }
+        bodies = {name: _body_report(scene, name) for name in scene.tracked}
         report = {
             "level": path.stem,
             "dt": level.settings.dt,
@@ -136,6 +120,25 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.profile and not args.json:
         _print_profile(world, profile)
     return EXIT_OK if all(r.passed for r in results) else EXIT_FAILED
+
+
+def _body_report(scene: Any, name: str) -> dict[str, Any]:
+    """A tracked body's readings now, as ``--json`` reports them (a group such as ``force`` is an
+    object of its own)."""
+    out: dict[str, Any] = {}
+    for q in REPORTED:
+        group = out if not q.report else out.setdefault(q.report, {})
+        group[q.name] = _json(sample(q, scene, name))
+    return out
+
+
+def _json(value: Value) -> Any:
+    """A reading as strict JSON: a non-finite number is null, and a vector with no finite part."""
+    if isinstance(value, tuple):
+        return _vec(value)
+    if isinstance(value, float):
+        return _num(value)
+    return value
 
 
 def _profile(path: Path, seconds: float) -> list[Any]:

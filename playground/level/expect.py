@@ -7,33 +7,20 @@ from typing import TYPE_CHECKING, Annotated, Literal
 from pydantic import Field, Strict, field_validator
 
 from playground.level.values import Finite, Name, NonNegative, Table, Vec
+from playground.quantities import CHECKED
 
-SCALAR_QUANTITIES = ("angle", "angular_velocity", "tilt")
+QUANTITIES = tuple(q.name for q in CHECKED)
+"""Every quantity an expectation reads (:mod:`playground.quantities`), in the order the schema
+lists them."""
+SCALAR_QUANTITIES = tuple(q.name for q in CHECKED if q.kind == "scalar")
 """Quantities that are numbers: angle (rad), angular velocity (rad/s), tilt (rad, 0..π)."""
-FORCE_QUANTITIES = (
-    "engine",
-    "contact",
-    "contact_normal",
-    "contact_friction",
-    "constraint",
-    "support",
-)
+VECTOR_QUANTITIES = tuple(q.name for q in CHECKED if q.kind == "vector")
+"""Quantities that are (x, y) vectors; pick a ``component`` or compare the vector."""
+FORCE_QUANTITIES = tuple(q.name for q in CHECKED if q.source == "solver")
 """Force readings of the solver, N; ``filtered = true`` gives the 1€-filtered reading."""
-CONTROLLER_QUANTITIES = ("hover", "drive", "grip", "push")
+CONTROLLER_QUANTITIES = tuple(q.name for q in CHECKED if q.source == "controller")
 """An actor's own readings of the forces its controller put on it in the last step, N (the
 grip: the joint's force the step before)."""
-QUANTITIES = (
-    "position",
-    "velocity",
-    *SCALAR_QUANTITIES,
-    "state",
-    *FORCE_QUANTITIES,
-    "perceived_gravity",
-    *CONTROLLER_QUANTITIES,
-)
-"""Every quantity an expectation reads, in the order the schema lists them."""
-VECTOR_QUANTITIES = tuple(q for q in QUANTITIES if q not in (*SCALAR_QUANTITIES, "state"))
-"""Quantities that are (x, y) vectors; pick a ``component`` or compare the vector."""
 
 if TYPE_CHECKING:
     Quantity = str

@@ -30,13 +30,14 @@ from playground.level.expect import (
     Expectation,
     Reading,
 )
+from playground.quantities import CHECKED, QUANTITIES
 
 __all__ = ["Context", "check_expectation"]
 
-RELATIVE_QUANTITIES = ("position", "velocity", "angle", "angular_velocity")
+RELATIVE_QUANTITIES = tuple(q.name for q in CHECKED if q.source == "body")
 """Quantities that may be read relative to another body's same quantity."""
 
-SPLIT_QUANTITIES = ("contact", "contact_normal", "contact_friction", "constraint")
+SPLIT_QUANTITIES = tuple(q.name for q in CHECKED if q.split)
 """Force readings that exist only when the engine's forces are split (``contact_split``)."""
 
 
@@ -206,7 +207,7 @@ def _readable(
 ) -> Iterator[Problem]:
     """What a body needs for its quantity ``q`` to be read."""
     level = ctx.level
-    if q in (*FORCE_QUANTITIES, "perceived_gravity") and body not in ctx.tracked:
+    if QUANTITIES[q].source in ("solver", "perception") and body not in ctx.tracked:
         yield Problem(f"{path}.body", f"{body!r} is not tracked; add it to tracking.bodies")
     if q in CONTROLLER_QUANTITIES and body not in ctx.actors:
         yield Problem(f"{path}.quantity", f"{body!r} is not an actor: it has no {q} reading")
