@@ -118,7 +118,7 @@ class Check:
         self.exp = exp
         self.name = name_of(exp)
         self.unit = "rad" if exp.angle_to is not None else UNITS[exp.quantity]
-        self.dt = scene.level.settings.dt
+        self.dt: float = scene.level.settings.dt
         self._window = exp.window or (0.0, scene.level.settings.seconds)
         self._filter: FilterChain | OneEuroFilter | None = None
         if exp.filtered and exp.quantity != "support":

@@ -13,13 +13,14 @@ vectorised force write per step. Per-body rules (scale, own direction) live in :
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import NDArray
 
-from playground._validate import bounded, bounded_vec, finite, in_range, unit
+from playground._validate import bounded, unit
+from playground.fields import check, param
 from playground.limits import (
     MAX_ANGLE,
     MAX_ANGULAR_SPEED,
@@ -69,14 +70,15 @@ class GravityField(Protocol):
 class Uniform:
     """The same acceleration everywhere and always.
 
-    Attributes:
-        g: acceleration, m/s². Default: Earth's gravity pointing to −y.
+    Default: Earth's gravity pointing to −y.
     """
 
-    g: Vec = (0.0, -STANDARD_GRAVITY)
+    g: Vec = param(
+        (0.0, -STANDARD_GRAVITY), doc="Acceleration.", unit="m/s²", ge=-MAX_GRAVITY, le=MAX_GRAVITY
+    )
 
     def __post_init__(self) -> None:
-        bounded_vec("g", self.g, MAX_GRAVITY, "m/s²")
+        check(self)
 
     @property
     def uniform(self) -> bool:
@@ -95,14 +97,16 @@ class Turn:
     ``duration = 0`` turns instantly. A flip is ``Turn(start, math.pi)``.
     """
 
-    start: float
-    angle: float
-    duration: float = 0.0
+    start: float = param(doc="When the turn starts.", unit="s", ge=0.0, le=MAX_TIME)
+    angle: float = param(
+        doc="How far it turns, CCW positive.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE
+    )
+    duration: float = param(
+        0.0, doc="How long it takes (0: instantly).", unit="s", ge=0.0, le=MAX_TIME
+    )
 
     def __post_init__(self) -> None:
-        finite("start", self.start)  # a turn after the run never happens: any time will do
-        bounded("angle", self.angle, MAX_ANGLE, "rad")
-        in_range("duration", self.duration, 0.0, MAX_TIME, "s")
+        check(self)
 
     def progress(self, t: float) -> float:
         """Fraction of the turn done at time ``t`` (0 … 1), eased with a smoothstep.
@@ -125,26 +129,22 @@ class RotatingRoom:
     The direction at time t is ``angle + rate·t + Σ turn.angle·turn.progress(t)``, measured from +x
     (so −π/2 is "down" on screen).
 
-    Attributes:
-        magnitude: |g|, m/s².
-        angle: direction at t = 0, rad.
-        rate: constant turning rate, rad/s.
-        turns: scheduled turns and flips.
-
     >>> room = RotatingRoom(angle=-math.pi / 2, turns=(Turn(1.0, math.pi),))
     >>> [round(float(c), 6) for c in room.vector(2.0)]
     [0.0, 9.81]
     """
 
-    magnitude: float = STANDARD_GRAVITY
-    angle: float = -math.pi / 2
-    rate: float = 0.0
-    turns: tuple[Turn, ...] = ()
+    magnitude: float = param(STANDARD_GRAVITY, doc="|g|.", unit="m/s²", ge=0.0, le=MAX_GRAVITY)
+    angle: float = param(
+        -math.pi / 2, doc="Direction at t = 0, from +x.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE
+    )
+    rate: float = param(
+        0.0, doc="Constant turning rate.", unit="rad/s", ge=-MAX_ANGULAR_SPEED, le=MAX_ANGULAR_SPEED
+    )
+    turns: tuple[Turn, ...] = param((), doc="Scheduled turns and flips.")
 
     def __post_init__(self) -> None:
-        bounded("magnitude", self.magnitude, MAX_GRAVITY, "m/s²")
-        bounded("angle", self.angle, MAX_ANGLE, "rad")
-        bounded("rate", self.rate, MAX_ANGULAR_SPEED, "rad/s")
+        check(self)
 
     @property
     def uniform(self) -> bool:
@@ -172,29 +172,22 @@ class Radial:
     ``g(r) = −g_surface·R²·r / (|r|² + ε²)^{3/2}``: equals ``g_surface`` at radius ``R`` (for ε ≪ R)
     and stays finite at the centre (Plummer softening).
 
-    Attributes:
-        center: the planet's centre, m.
-        surface_gravity: |g| at ``radius``, m/s².
-        radius: the planet's radius, m.
-        softening: ε, m.
-
     >>> planet = Radial(center=(0.0, 0.0), surface_gravity=9.81, radius=10.0, softening=0.0)
     >>> planet.at(np.array([[0.0, 10.0], [20.0, 0.0]]), 0.0).round(4).tolist()
     [[-0.0, -9.81], [-2.4525, -0.0]]
     """
 
-    center: Vec = (0.0, 0.0)
-    surface_gravity: float = STANDARD_GRAVITY
-    radius: float = 10.0
-    softening: float = 0.5
+    center: Vec = param(
+        (0.0, 0.0), doc="The planet's centre.", unit="m", ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    surface_gravity: float = param(
+        STANDARD_GRAVITY, doc="|g| at radius.", unit="m/s²", ge=-MAX_GRAVITY, le=MAX_GRAVITY
+    )
+    radius: float = param(10.0, doc="The planet's radius.", unit="m", gt=0.0, le=MAX_COORDINATE)
+    softening: float = param(0.5, doc="Softening length ε.", unit="m", ge=0.0, le=MAX_LENGTH)
 
     def __post_init__(self) -> None:
-        bounded_vec("center", self.center, MAX_COORDINATE, "m")
-        bounded("surface_gravity", self.surface_gravity, MAX_GRAVITY, "m/s²")
-        in_range("radius", self.radius, 0.0, MAX_COORDINATE, "m")
-        if self.radius == 0.0:
-            raise ValueError("radius: expected a number > 0 m, got 0.0")
-        in_range("softening", self.softening, 0.0, MAX_LENGTH, "m")
+        check(self)
 
     @property
     def uniform(self) -> bool:
@@ -214,8 +207,10 @@ class Radial:
 class Zone:
     """A region with its own field: an axis-aligned box ``(x0, y0, x1, y1)`` in metres."""
 
-    box: tuple[float, float, float, float]
-    field: GravityField
+    box: tuple[float, float, float, float] = param(
+        doc="(x0, y0, x1, y1).", unit="m", ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    field: GravityField = param(doc="The zone's own field.")
 
     def __post_init__(self) -> None:
         x0, y0, x1, y1 = self.box
@@ -242,8 +237,8 @@ class Zones:
     [[0.0, 9.81], [0.0, -9.81]]
     """
 
-    base: GravityField = field(default_factory=Uniform)
-    zones: tuple[Zone, ...] = ()
+    base: GravityField = param(doc="The field outside every zone.", default_factory=Uniform)
+    zones: tuple[Zone, ...] = param((), doc="Regions with their own field; the first wins.")
 
     @property
     def uniform(self) -> bool:

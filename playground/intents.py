@@ -11,35 +11,24 @@ at time ``t``; the controller turns that into forces within its budgets.
 
 from __future__ import annotations
 
+import functools
 from bisect import bisect_right
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-from playground._validate import finite, positive, unit
+from playground._validate import finite, unit
+from playground.fields import check, param
 
 __all__ = ["Idle", "Intent", "IntentSource", "Patrol", "Script"]
-
-
-def _unit_range(name: str, value: float) -> None:
-    finite(name, value)
-    if not -1.0 <= value <= 1.0:
-        raise ValueError(f"{name}: expected a number in [-1, 1], got {value!r}")
 
 
 @dataclass(frozen=True, slots=True)
 class Intent:
     """One step's wishes. Held values (``grab``, ``push``) act while True.
 
-    Attributes:
-        move: −1 … 1 along the ground tangent; +1 is "right" when facing with up = up (the
-            tangent is up rotated by −90°).
-        jump: wants to jump (a press is remembered for the controller's jump buffer).
-        grab: held: grab and hang on what the hands touch; released: let go.
-        push: held: push the body in contact, within the push budget.
-        climb: −1 … 1: move the grip along the held body.
-        gravity: switch one's own gravity to this direction (unit-ised); None: no change.
-        restore_gravity: back to the field.
-        nullify: name of a body whose gravity to nullify (scale 0); None: nobody.
+    ``move`` +1 is "right" when facing with up = up (the tangent is up rotated by −90°); a
+    ``jump`` press is remembered for the controller's jump buffer; a ``gravity`` direction is
+    unit-ised.
 
     >>> Intent(gravity=(0.0, 2.0)).gravity
     (0.0, 1.0)
@@ -49,18 +38,21 @@ class Intent:
     ValueError: move: expected a number in [-1, 1], got 2.0
     """
 
-    move: float = 0.0
-    jump: bool = False
-    grab: bool = False
-    push: bool = False
-    climb: float = 0.0
-    gravity: tuple[float, float] | None = None
-    restore_gravity: bool = False
-    nullify: str | None = None
+    move: float = param(0.0, doc="Move along the ground tangent, −1 … 1.", ge=-1.0, le=1.0)
+    jump: bool = param(False, doc="Wants to jump.")
+    grab: bool = param(False, doc="Held: grab and hang on what the hands touch; released: let go.")
+    push: bool = param(False, doc="Held: push the body in contact, within the push budget.")
+    climb: float = param(0.0, doc="Move the grip along the held body, −1 … 1.", ge=-1.0, le=1.0)
+    gravity: tuple[float, float] | None = param(
+        None,
+        doc="Own gravity direction (any length); none: no change.",
+        nonzero=True,
+    )
+    restore_gravity: bool = param(False, doc="Own gravity back to the field's.")
+    nullify: str | None = param(None, doc="Body whose gravity to nullify; none: nobody.")
 
     def __post_init__(self) -> None:
-        _unit_range("move", self.move)
-        _unit_range("climb", self.climb)
+        check(self)
         if self.gravity is not None:
             object.__setattr__(self, "gravity", unit("gravity", self.gravity))
         if self.nullify is not None and not isinstance(self.nullify, str):
@@ -127,24 +119,25 @@ class Script:
 class Patrol:
     """A simple enemy: walks one way for ``period / 2`` seconds, then the other, forever.
 
-    Attributes:
-        speed: magnitude of the move axis, 0 … 1 (a fraction of the controller's max speed).
-        period: time for one walk there and back, s.
+    The ``speed`` is a fraction of the controller's max speed.
 
     >>> p = Patrol(speed=0.5, period=4.0)
     >>> p.intent(1.0).move, p.intent(3.0).move
     (0.5, -0.5)
     """
 
-    speed: float = 0.5
-    period: float = 4.0
+    speed: float = param(0.5, doc="Move input, 0 … 1.", ge=0.0, le=1.0)
+    period: float = param(4.0, doc="One walk there and back.", unit="s", gt=0.0)
 
     def __post_init__(self) -> None:
-        finite("speed", self.speed)
-        if not 0.0 <= self.speed <= 1.0:
-            raise ValueError(f"speed: expected a number in [0, 1], got {self.speed!r}")
-        positive("period", self.period)
+        check(self)
 
     def intent(self, t: float) -> Intent:
         phase = (t % self.period) / self.period
-        return Intent(move=self.speed if phase < 0.5 else -self.speed)
+        return _moving(self.speed if phase < 0.5 else -self.speed)
+
+
+@functools.lru_cache(maxsize=64)
+def _moving(move: float) -> Intent:
+    """The intent to move at ``move`` (intents are frozen: one serves every step)."""
+    return Intent(move=move)

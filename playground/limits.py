@@ -21,6 +21,7 @@ __all__ = [
     "MAX_GRAVITY",
     "MAX_GRAVITY_SCALE",
     "MAX_IMPULSE",
+    "MAX_ITERATIONS",
     "MAX_LENGTH",
     "MAX_MASS",
     "MAX_MASS_RATIO",
@@ -29,6 +30,7 @@ __all__ = [
     "MAX_SECONDS",
     "MAX_SPEED",
     "MAX_STIFFNESS",
+    "MAX_SUBSTEPS",
     "MAX_TIME",
     "MAX_ZOOM",
     "MIN_DT",
@@ -118,6 +120,14 @@ short level into hours of wall time without making a game-scale scene more accur
 MAX_DT = 0.1
 """Largest step, s (10 Hz): a slower step is a slideshow, and a spring is only stable while
 2πf·dt < 2 (below 3.2 Hz at 0.1 s; the controller's hover spring is 5 Hz)."""
+
+MAX_SUBSTEPS = 64
+"""Most ``space.step`` calls per step: 64 substeps of the largest dt are 1.6 ms each, finer than any
+spring a level may hold needs; more only multiply the cost of every step."""
+
+MAX_ITERATIONS = 1000
+"""Most solver iterations per substep: enough for the largest mass ratio a level allows
+(:data:`MAX_MASS_RATIO`); more cost time without holding anything more."""
 
 RUNAWAY_POSITION = 1.0e10
 """The runtime guard's bound on |x|, |y| of a body, m. Nothing in an accepted level gets there in a

@@ -19,7 +19,18 @@ from typing import Literal, Protocol, runtime_checkable
 
 import pymunk
 
-from playground._validate import finite, finite_vec, positive
+from playground._validate import positive
+from playground.fields import check, param
+from playground.limits import (
+    MAX_ACCELERATION,
+    MAX_ANGLE,
+    MAX_ANGULAR_SPEED,
+    MAX_COORDINATE,
+    MAX_FREQUENCY,
+    MAX_LENGTH,
+    MAX_SPEED,
+    MAX_TIME,
+)
 from playground.vec import Vec
 
 __all__ = ["Circle", "Elevator", "Mover", "Path", "Sine", "Spin", "Waypoints", "ring_room"]
@@ -38,32 +49,27 @@ class Path(Protocol):
 class Waypoints:
     """Through a list of points at a constant speed, linear or eased, looping or ping-pong.
 
-    Attributes:
-        points: the corners, m (at least two).
-        speed: travel speed along straight legs, m/s (eased legs average the same speed).
-        ease: smoothstep each leg, so the mover stops at every corner.
-        mode: ``"loop"`` returns from the last point to the first; ``"pingpong"`` reverses;
-            ``"once"`` stops at the last point.
-        angle: constant angle of the body, rad.
+    Eased legs average the same speed as straight ones. ``"loop"`` returns from the last point
+    to the first; ``"pingpong"`` reverses; ``"once"`` stops at the last point.
 
     >>> Waypoints(((0.0, 0.0), (2.0, 0.0)), speed=1.0, mode="pingpong").pose(3.0)
     ((1.0, 0.0), 0.0)
     """
 
-    points: tuple[Vec, ...]
-    speed: float = 1.0
-    ease: bool = False
-    mode: Literal["loop", "pingpong", "once"] = "pingpong"
-    angle: float = 0.0
+    points: tuple[Vec, ...] = param(
+        doc="The corners.", unit="m", min_items=2, ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    speed: float = param(1.0, doc="Travel speed along a leg.", unit="m/s", gt=0.0, le=MAX_SPEED)
+    ease: bool = param(False, doc="Smoothstep each leg, so the mover stops at every corner.")
+    mode: Literal["loop", "pingpong", "once"] = param(
+        "pingpong", doc="At the last point: back to the first, reverse, or stop."
+    )
+    angle: float = param(
+        0.0, doc="Constant angle of the body.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE
+    )
 
     def __post_init__(self) -> None:
-        if len(self.points) < 2:
-            raise ValueError(f"points: expected at least 2 waypoints, got {len(self.points)}")
-        for i, p in enumerate(self.points):
-            finite_vec(f"points[{i}]", p)
-        positive("speed", self.speed)
-        if self.mode not in ("loop", "pingpong", "once"):
-            raise ValueError(f"mode: expected one of 'loop', 'pingpong', 'once', got {self.mode!r}")
+        check(self)
 
     def _legs(self) -> list[tuple[Vec, Vec]]:
         pts = list(self.points)
@@ -95,22 +101,23 @@ class Waypoints:
 class Sine:
     """Oscillation ``center + amplitude·sin(2πf·t + phase)``.
 
-    Attributes:
-        center: m.  amplitude: m (a vector: the direction of travel).  frequency: Hz.
-        phase: rad.  angle: constant angle, rad.
+    The amplitude is a vector: the direction of travel.
     """
 
-    center: Vec = (0.0, 0.0)
-    amplitude: Vec = (1.0, 0.0)
-    frequency: float = 0.25
-    phase: float = 0.0
-    angle: float = 0.0
+    center: Vec = param(
+        (0.0, 0.0), doc="Centre of the motion.", unit="m", ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    amplitude: Vec = param(
+        (1.0, 0.0), doc="Amplitude and direction.", unit="m", ge=-MAX_LENGTH, le=MAX_LENGTH
+    )
+    frequency: float = param(0.25, doc="Frequency.", unit="Hz", gt=0.0, le=MAX_FREQUENCY)
+    phase: float = param(0.0, doc="Phase.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE)
+    angle: float = param(
+        0.0, doc="Constant angle of the body.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE
+    )
 
     def __post_init__(self) -> None:
-        finite_vec("center", self.center)
-        finite_vec("amplitude", self.amplitude)
-        positive("frequency", self.frequency)
-        finite("phase", self.phase)
+        check(self)
 
     def pose(self, t: float) -> Pose:
         s = math.sin(2.0 * math.pi * self.frequency * t + self.phase)
@@ -127,18 +134,23 @@ class Circle:
     The body keeps its angle (a Ferris-wheel gondola) unless ``turn_with_path`` is set.
     """
 
-    center: Vec = (0.0, 0.0)
-    radius: float = 1.0
-    period: float = 4.0
-    phase: float = 0.0
-    turn_with_path: bool = False
+    center: Vec = param(
+        (0.0, 0.0), doc="Centre of the circle.", unit="m", ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    radius: float = param(1.0, doc="Radius.", unit="m", gt=0.0, le=MAX_LENGTH)
+    period: float = param(
+        4.0,
+        doc="One turn (negative: clockwise).",
+        unit="s",
+        ge=-MAX_TIME,
+        le=MAX_TIME,
+        nonzero=True,
+    )
+    phase: float = param(0.0, doc="Angle at t = 0.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE)
+    turn_with_path: bool = param(False, doc="Turn the body with the path.")
 
     def __post_init__(self) -> None:
-        finite_vec("center", self.center)
-        positive("radius", self.radius)
-        finite("period", self.period)
-        if self.period == 0.0:
-            raise ValueError("period: expected a non-zero number of seconds, got 0")
+        check(self)
 
     def pose(self, t: float) -> Pose:
         a = self.phase + 2.0 * math.pi * t / self.period
@@ -153,13 +165,20 @@ class Circle:
 class Spin:
     """Constant rotation about a fixed ``position`` (m) at ``rate`` (rad/s, CCW positive)."""
 
-    position: Vec = (0.0, 0.0)
-    rate: float = 1.0
-    angle: float = 0.0
+    position: Vec = param(
+        (0.0, 0.0), doc="Fixed position.", unit="m", ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    rate: float = param(
+        1.0,
+        doc="Turning rate, CCW positive.",
+        unit="rad/s",
+        ge=-MAX_ANGULAR_SPEED,
+        le=MAX_ANGULAR_SPEED,
+    )
+    angle: float = param(0.0, doc="Angle at t = 0.", unit="rad", ge=-MAX_ANGLE, le=MAX_ANGLE)
 
     def __post_init__(self) -> None:
-        finite_vec("position", self.position)
-        finite("rate", self.rate)
+        check(self)
 
     def pose(self, t: float) -> Pose:
         return (self.position, self.angle + self.rate * t)
@@ -176,21 +195,31 @@ class Elevator:
     ((0.0, 4.0), 0.0)
     """
 
-    start: Vec = (0.0, 0.0)
-    axis: Vec = (0.0, 1.0)
-    acceleration: float = 1.0
-    start_time: float = 0.0
-    duration: float = math.inf
+    start: Vec = param(
+        (0.0, 0.0), doc="Where it waits.", unit="m", ge=-MAX_COORDINATE, le=MAX_COORDINATE
+    )
+    axis: Vec = param(
+        (0.0, 1.0),
+        doc="Direction of travel (any length).",
+        nonzero=True,
+        ge=-MAX_COORDINATE,
+        le=MAX_COORDINATE,
+    )
+    acceleration: float = param(
+        1.0, doc="Acceleration.", unit="m/s²", ge=-MAX_ACCELERATION, le=MAX_ACCELERATION
+    )
+    start_time: float = param(0.0, doc="When it starts.", unit="s", ge=-MAX_TIME, le=MAX_TIME)
+    duration: float = param(
+        math.inf,
+        doc="How long it accelerates (default: forever).",
+        unit="s",
+        gt=0.0,
+        le=MAX_TIME,
+        inf=True,
+    )
 
     def __post_init__(self) -> None:
-        finite_vec("start", self.start)
-        finite_vec("axis", self.axis)
-        if math.hypot(*self.axis) == 0.0:
-            raise ValueError("axis: expected a non-zero vector")
-        finite("acceleration", self.acceleration)
-        finite("start_time", self.start_time)
-        if not self.duration > 0.0:
-            raise ValueError(f"duration: expected a number of seconds > 0, got {self.duration!r}")
+        check(self)
 
     def distance(self, t: float) -> float:
         """Distance travelled along the axis at time ``t``, m."""

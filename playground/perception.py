@@ -9,13 +9,12 @@ threshold, so a 180° flip (which passes through zero) never yields a NaN or zer
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
 
-from playground._validate import positive
+from playground.fields import check, param
 from playground.filters.chain import FilterChain
 from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
@@ -25,29 +24,26 @@ __all__ = ["PerceivedGravity", "Perception"]
 
 @dataclass(frozen=True, slots=True)
 class Perception:
-    """How perceived gravity is filtered.
+    """How perceived gravity is filtered (a 1€ filter, optionally after a median-of-3 stage).
 
-    Attributes:
-        min_cutoff: 1€ minimum cutoff, Hz. Lower: steadier at rest, more lag.
-        beta: 1€ speed coefficient, s/m·s⁻²… (cutoff rises by β per m/s³ of change).
-        d_cutoff: cutoff of the derivative's smoothing, Hz.
-        spike_filter: put a median-of-3 stage first (removes one-step impulse spikes, one step of
-            delay for a spike only).
-        up_threshold: below this |perceived gravity| (m/s²) "up" holds its last direction.
+    A lower ``min_cutoff`` is steadier at rest and lags more; the cutoff rises by ``beta`` per
+    m/s³ of change; ``spike_filter`` removes one-step impulse spikes at one step of delay (for a
+    spike only).
     """
 
-    min_cutoff: float = 2.0
-    beta: float = 0.05
-    d_cutoff: float = 1.0
-    spike_filter: bool = True
-    up_threshold: float = 1.0
+    min_cutoff: float = param(2.0, doc="1€ minimum cutoff.", unit="Hz", gt=0.0)
+    beta: float = param(0.05, doc="1€ speed coefficient.", unit="s²/m", ge=0.0)
+    d_cutoff: float = param(1.0, doc="Cutoff of the derivative's smoothing.", unit="Hz", gt=0.0)
+    spike_filter: bool = param(True, doc="Median-of-3 stage before the 1€ filter.")
+    up_threshold: float = param(
+        1.0,
+        doc="Below this |perceived gravity| up holds its last direction.",
+        unit="m/s²",
+        gt=0.0,
+    )
 
     def __post_init__(self) -> None:
-        positive("min_cutoff", self.min_cutoff)
-        positive("d_cutoff", self.d_cutoff)
-        positive("up_threshold", self.up_threshold)
-        if not (math.isfinite(self.beta) and self.beta >= 0.0):
-            raise ValueError(f"beta: expected a finite number >= 0, got {self.beta!r}")
+        check(self)
 
 
 class PerceivedGravity:

@@ -12,19 +12,19 @@ True
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
 import pymunk
 
-from playground import gravity as gravity_mod
 from playground import movers as movers_mod
-from playground.gravity import GravityField, GravityRule, Uniform
+from playground.gravity import GravityRule, Uniform
 from playground.level.bodies import Actor, MoverModel, Prop, controller_config
+from playground.level.derive import to_core
 from playground.level.document import Level
 from playground.level.errors import LevelError, Problem
-from playground.level.gravity import Gravity as GravityModel
 from playground.level.joints import STATIC
 from playground.level.joints import Joint as JointModel
 from playground.level.shapes import Box, Capsule, CircleShape, Polygon, Ring, Segment, Shape
@@ -40,9 +40,7 @@ from playground.level.timeline import (
     Spawn,
 )
 from playground.limits import MAX_MASS_RATIO, MAX_OVERLAP, SPRING_LIMIT
-from playground.perception import Perception
 from playground.vec import Vec
-from playground.world.config import WorldConfig
 from playground.world.world import World
 
 if TYPE_CHECKING:
@@ -112,13 +110,9 @@ def build(level: Level) -> Scene:
 
 
 def _build(level: Level) -> Scene:
-    s = level.settings
-    p = level.tracking.perception
-    # The models restate the frozen configs key for key (tests/test_level_defaults.py).
-    config = WorldConfig(
-        **s.model_dump(exclude={"seconds"}), perception=Perception(**p.model_dump())
-    )
-    world = World(config, gravity=gravity_field(level.gravity))
+    settings = to_core(level.settings)
+    config = dataclasses.replace(settings, perception=to_core(level.tracking.perception))
+    world = World(config, gravity=to_core(level.gravity))
     scene = Scene(level, world)
     static = world.space.static_body
     for shape in level.geometry:
@@ -258,28 +252,6 @@ def _where(level: Level, name: str) -> str:
     return name
 
 
-def gravity_field(model: GravityModel) -> GravityField:
-    """The core field for a level's gravity table."""
-    if model.kind == "uniform":
-        return Uniform(model.g)
-    if model.kind == "rotating":
-        return gravity_mod.RotatingRoom(
-            magnitude=model.magnitude,
-            angle=model.angle,
-            rate=model.rate,
-            turns=tuple(gravity_mod.Turn(t.start, t.angle, t.duration) for t in model.turns),
-        )
-    if model.kind == "radial":
-        return gravity_mod.Radial(
-            center=model.center,
-            surface_gravity=model.surface_gravity,
-            radius=model.radius,
-            softening=model.softening,
-        )
-    zones = tuple(gravity_mod.Zone(z.box, gravity_field(z.field)) for z in model.zones)
-    return gravity_mod.Zones(gravity_field(model.base), zones)
-
-
 def _shapes(body: pymunk.Body, model: Shape) -> list[pymunk.Shape]:
     """The pymunk shapes of one shape table, in the body's frame (not yet added)."""
     out: list[pymunk.Shape]
@@ -323,21 +295,7 @@ def _add_mover(world: World, model: MoverModel) -> None:
     body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
     shapes = [s for m in model.shapes for s in _shapes(body, m)]
     world.add(model.name, body, *shapes)
-    world.add_mover(model.name, _path(model))
-
-
-def _path(model: MoverModel) -> movers_mod.Path:
-    p = model.path
-    if p.kind == "waypoints":
-        return movers_mod.Waypoints(tuple(p.points), p.speed, p.ease, p.mode, p.angle)
-    if p.kind == "sine":
-        return movers_mod.Sine(p.center, p.amplitude, p.frequency, p.phase, p.angle)
-    if p.kind == "circle":
-        return movers_mod.Circle(p.center, p.radius, p.period, p.phase, p.turn_with_path)
-    if p.kind == "spin":
-        return movers_mod.Spin(p.position, p.rate, p.angle)
-    duration = math.inf if p.duration is None else p.duration
-    return movers_mod.Elevator(p.start, p.axis, p.acceleration, p.start_time, duration)
+    world.add_mover(model.name, to_core(model.path))
 
 
 def _moment(model: Shape, mass: float) -> float:
@@ -385,7 +343,7 @@ def make_prop(world: World, model: Prop) -> pymunk.Body:
 
 def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
     from playground.controller.controller import Controller
-    from playground.intents import Patrol, Script
+    from playground.intents import Script
 
     source: Any = None
     timeline = [inp for inp in level.inputs if inp.actor == actor.name]
@@ -394,7 +352,7 @@ def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
             timeline=tuple((inp.t, inp.intent()) for inp in sorted(timeline, key=lambda i: i.t))
         )
     elif actor.patrol is not None:
-        source = Patrol(speed=actor.patrol.speed, period=actor.patrol.period)
+        source = to_core(actor.patrol)
     controller = Controller(
         world,
         actor.name,

@@ -26,6 +26,7 @@ from playground.bench.blocks import interleave
 from playground.bench.pile import floor_length, pile_space, pile_world
 from playground.controller.controller import Controller
 from playground.gravity import GravityRule, Radial, RotatingRoom, Turn
+from playground.limits import MAX_TIME
 from playground.movers import Sine
 from playground.world.config import WorldConfig
 from playground.world.schedule import Stage
@@ -62,7 +63,7 @@ MOVERS = 10
 
 def _rotating_room(world: World, n: int) -> None:
     # A room that turns (a scheduled turn far in the future): the gravity stage runs every step.
-    world.gravity = RotatingRoom(turns=(Turn(1e9, math.pi),))
+    world.gravity = RotatingRoom(turns=(Turn(MAX_TIME, math.pi),))
 
 
 def _radial(world: World, n: int) -> None:

@@ -56,13 +56,15 @@ def _room_turn() -> Turn:
     gravity = shipped_level("rotating_room").gravity
     if not isinstance(gravity, RotatingGravity) or not gravity.turns:
         raise TypeError("rotating_room: expected a rotating field with a scheduled turn")
-    return gravity.turns[0]
+    turn: Turn = gravity.turns[0]
+    return turn
 
 
 @number
 def ch3_room_turn() -> float:
     """How far rotating_room's field turns, rad."""
-    return _room_turn().angle
+    angle: float = _room_turn().angle
+    return angle
 
 
 @number
@@ -74,7 +76,8 @@ def ch3_room_turn_deg() -> float:
 @number
 def ch3_room_turn_time() -> float:
     """How long rotating_room's field takes to turn, s."""
-    return _room_turn().duration
+    duration: float = _room_turn().duration
+    return duration
 
 
 def _ring(rate: float | None = None) -> Level:
@@ -154,7 +157,8 @@ def ch3_ring_rate() -> float:
     (mover,) = _ring().movers
     if not isinstance(mover.path, SpinPath):
         raise TypeError(f"spinning_ring: expected a spin path, got {mover.path.kind!r}")
-    return mover.path.rate
+    rate: float = mover.path.rate
+    return rate
 
 
 @number

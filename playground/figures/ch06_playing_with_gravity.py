@@ -229,7 +229,8 @@ def ch6_leap_speed() -> float:
     (mover,) = shipped_level("gravity_leap").movers
     if not isinstance(mover.path, WaypointsPath):
         raise TypeError(f"gravity_leap: expected a waypoints path, got {mover.path.kind!r}")
-    return mover.path.speed
+    speed: float = mover.path.speed
+    return speed
 
 
 def leap_half_width() -> float:

@@ -8,7 +8,8 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field, Strict, field_validator
 
-from playground import limits
+from playground import intents, limits
+from playground.level.derive import Derived
 from playground.level.errors import suggest
 from playground.level.paths import Path_
 from playground.level.shapes import Shape
@@ -18,7 +19,6 @@ from playground.level.values import (
     Mass,
     Moment,
     Name,
-    Positive,
     Speed,
     Table,
     TurnRate,
@@ -47,11 +47,10 @@ class MoverModel(Table):
     path: Path_
 
 
-class Patrol(Table):
-    """Walk one way for half the ``period`` (s) at move input ``speed`` (0..1), then back."""
+class Patrol(Derived):
+    """Walk one way for half the ``period`` at move input ``speed``, then back."""
 
-    speed: float = Field(default=0.5, ge=0.0, le=1.0, description="Move input, 0..1.")
-    period: Positive = 4.0
+    __core__ = intents.Patrol
 
 
 class Actor(Table):

@@ -1,54 +1,50 @@
-"""A level's gravity field: uniform, rotating, radial, or zones of those (tagged by ``kind``)."""
+"""A level's gravity field: uniform, rotating, radial, or zones of those (tagged by ``kind``).
+
+Each table's keys are the fields of its :mod:`playground.gravity` class (see
+:mod:`playground.level.derive`).
+"""
 
 from __future__ import annotations
 
-import math
 from typing import Annotated, Literal
 
-from pydantic import ConfigDict, Field, Strict, field_validator
+from pydantic import ConfigDict, Field
 
-from playground import limits
-from playground.gravity import STANDARD_GRAVITY
-from playground.level.values import Finite, Gravity_, NonNegative, Positive, Table, TurnRate, Vec
+from playground import gravity
+from playground.level.derive import Derived
 
 
-class UniformGravity(Table):
-    """The same acceleration everywhere (m/s²)."""
+class UniformGravity(Derived):
+    """The same acceleration everywhere."""
 
     # A gravity table names its kind (the field is a tagged union); the default only serves the
     # level's own default field. The schema says so too.
     model_config = ConfigDict(json_schema_extra={"required": ["kind"]})
+    __core__ = gravity.Uniform
 
     kind: Literal["uniform"] = "uniform"
-    g: Annotated[tuple[Gravity_, Gravity_], Strict(False)] = (0.0, -STANDARD_GRAVITY)
 
 
-class Turn(Table):
-    """A scheduled turn of a rotating room's gravity, rad over s."""
+class Turn(Derived):
+    """A scheduled turn of a rotating room's gravity."""
 
-    start: NonNegative
-    angle: Finite
-    duration: NonNegative = 0.0
+    __core__ = gravity.Turn
 
 
-class RotatingGravity(Table):
-    """Uniform gravity whose direction turns (rad from +x; −π/2 is down)."""
+class RotatingGravity(Derived):
+    """Uniform gravity whose direction turns (from +x; −π/2 is down)."""
+
+    __core__ = gravity.RotatingRoom
 
     kind: Literal["rotating"]
-    magnitude: Annotated[float, Field(ge=0.0, le=limits.MAX_GRAVITY)] = STANDARD_GRAVITY
-    angle: Finite = -math.pi / 2
-    rate: TurnRate = Field(default=0.0, description="Constant turning rate, rad/s.")
-    turns: list[Turn] = Field(default_factory=list)
 
 
-class RadialGravity(Table):
+class RadialGravity(Derived):
     """Gravity toward a centre (a small planet)."""
 
+    __core__ = gravity.Radial
+
     kind: Literal["radial"]
-    center: Vec = (0.0, 0.0)
-    surface_gravity: Gravity_ = STANDARD_GRAVITY
-    radius: Positive = 10.0
-    softening: NonNegative = 0.5
 
 
 SimpleGravity = Annotated[
@@ -56,26 +52,23 @@ SimpleGravity = Annotated[
 ]
 
 
-class Zone(Table):
-    """A box (x0, y0, x1, y1), m, with its own field."""
+class Zone(Derived):
+    """A box with its own field."""
 
-    box: Annotated[tuple[Finite, Finite, Finite, Finite], Strict(False)]
-    field: SimpleGravity
+    __core__ = gravity.Zone
 
-    @field_validator("box")
-    @classmethod
-    def _ordered(cls, box: tuple[float, float, float, float]) -> tuple[float, float, float, float]:
-        if box[2] <= box[0] or box[3] <= box[1]:
-            raise ValueError("expected (x0, y0, x1, y1) with x1 > x0 and y1 > y0")
-        return box
+    field: SimpleGravity = Field(description="The zone's own field.")
 
 
-class ZonesGravity(Table):
+class ZonesGravity(Derived):
     """A base field with regions that override it (first zone wins)."""
 
+    __core__ = gravity.Zones
+
     kind: Literal["zones"]
-    base: SimpleGravity = Field(default_factory=lambda: UniformGravity())
-    zones: list[Zone] = Field(default_factory=list)
+    base: SimpleGravity = Field(
+        default_factory=lambda: UniformGravity(), description="The field outside every zone."
+    )
 
 
 Gravity = Annotated[

@@ -6,44 +6,31 @@ from typing import Literal
 
 from pydantic import Field
 
-from playground import limits
-from playground.level.values import Frequency, Name, NonNegative, Positive, Table, Vec, Whole
+from playground import limits, perception
+from playground.level.derive import Derived
+from playground.level.values import Name, NonNegative, Positive, Table, Vec
+from playground.world.config import WorldConfig
 
 
-class Settings(Table):
-    """Simulation settings (see :class:`playground.WorldConfig`)."""
+class Settings(Derived):
+    """Simulation settings: the :class:`playground.WorldConfig` keys a level sets, and the run's
+    length."""
 
-    dt: float = Field(
-        default=1.0 / 120.0,
-        ge=limits.MIN_DT,
-        le=limits.MAX_DT,
-        allow_inf_nan=False,
-        description="Fixed step, s (1e-4 … 0.1: see playground.limits).",
-    )
-    substeps: Whole = Field(default=1, ge=1, le=64, description="space.step calls per step.")
-    iterations: Whole = Field(
-        default=10, ge=1, le=1000, description="Solver iterations per substep."
-    )
-    damping: float = Field(
-        default=1.0, gt=0.0, le=1.0, description="Fraction of velocity kept per second (1: none)."
-    )
-    collision_slop: NonNegative = Field(default=0.005, description="Allowed overlap, m.")
-    contact_split: bool = Field(
-        default=False, description="Split engine forces into contact and constraint readings."
-    )
+    __core__ = WorldConfig
+    __only__ = ("dt", "substeps", "iterations", "damping", "collision_slop", "contact_split")
+
     seconds: Positive = Field(
-        default=3.0, le=limits.MAX_SECONDS, description="Length of a run, s (at most an hour)."
+        default=3.0,
+        le=limits.MAX_SECONDS,
+        description="Length of a run (at most an hour).",
+        json_schema_extra={"unit": "s"},
     )
 
 
-class Perception(Table):
+class Perception(Derived):
     """How perceived gravity is filtered (see :class:`playground.Perception`)."""
 
-    min_cutoff: Frequency = Field(default=2.0, description="1€ minimum cutoff, Hz.")
-    beta: NonNegative = Field(default=0.05, description="1€ speed coefficient.")
-    d_cutoff: Frequency = Field(default=1.0, description="1€ derivative cutoff, Hz.")
-    spike_filter: bool = Field(default=True, description="Median-of-3 stage before the 1€ filter.")
-    up_threshold: Positive = Field(default=1.0, description="Below this |g| (m/s²) up is held.")
+    __core__ = perception.Perception
 
 
 class Tracking(Table):

@@ -5,15 +5,16 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal
 
-from pydantic import Field, Strict, field_validator
+from pydantic import Field, Strict
 
 from playground import limits
 from playground.intents import Intent
 from playground.level.bodies import Prop
-from playground.level.values import Finite, Gravity_, Name, NonNegative, Table, Unit, Vec
+from playground.level.derive import Derived, to_core
+from playground.level.values import Finite, Gravity_, Name, NonNegative, Table, Vec
 
 
-class IntentTable(Table):
+class IntentTable(Derived):
     """One intent, as a level's ``[[inputs]]`` table and a replay's change both write it: the
     fields of :class:`playground.intents.Intent` (a replay leaves out those at their default).
 
@@ -24,21 +25,7 @@ class IntentTable(Table):
     True
     """
 
-    move: Unit = 0.0
-    jump: bool = False
-    grab: bool = False
-    push: bool = False
-    climb: Unit = 0.0
-    gravity: Vec | None = Field(default=None, description="Own gravity direction (any length).")
-    restore_gravity: bool = False
-    nullify: Name | None = Field(default=None, description="Body whose gravity to nullify.")
-
-    @field_validator("gravity")
-    @classmethod
-    def _direction(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
-        if v is not None and v == (0.0, 0.0):
-            raise ValueError("expected a non-zero direction")
-        return v
+    __core__ = Intent
 
     @classmethod
     def of(cls, intent: Intent) -> IntentTable:
@@ -47,7 +34,8 @@ class IntentTable(Table):
 
     def intent(self) -> Intent:
         """The core intent these keys describe."""
-        return Intent(**{name: getattr(self, name) for name in _INTENT_KEYS})
+        intent: Intent = to_core(self)
+        return intent
 
     def table(self) -> dict[str, Any]:
         """The keys that differ from the defaults, as JSON and TOML write them (lists, not
@@ -60,10 +48,10 @@ _INTENT_KEYS = tuple(IntentTable.model_fields)
 
 
 class Input(IntentTable):
-    """From time ``t`` (s) on, ``actor`` holds this intent (until its next input)."""
+    """From time ``t`` on, ``actor`` holds this intent (until its next input)."""
 
-    t: NonNegative
-    actor: Name = "player"
+    t: NonNegative = Field(description="When.", json_schema_extra={"unit": "s"})
+    actor: Name = Field(default="player", description="Whose intent.")
 
 
 Impulse_ = Annotated[

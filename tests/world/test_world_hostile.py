@@ -94,7 +94,7 @@ def test_intent_with_nan_move_is_refused() -> None:
     """Law: an intent whose move is NaN never reaches the drive: Intent refuses it, and a source
     returning something that is not an Intent (a duck type skipping the check) stops the step with
     a ValueError naming the actor — it never gets the full drive budget."""
-    with pytest.raises(ValueError, match=r"^move: expected a finite number"):
+    with pytest.raises(ValueError, match=r"^move: expected a number in \[-1, 1\], got nan"):
         Intent(move=NAN)
 
     class Sneaky:
