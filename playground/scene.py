@@ -21,7 +21,7 @@ import pymunk
 
 from playground import movers as movers_mod
 from playground.gravity import GravityRule, Uniform
-from playground.level.bodies import Actor, MoverModel, Prop, controller_config
+from playground.level.bodies import Actor, MoverModel, Prop
 from playground.level.derive import to_core
 from playground.level.document import Level
 from playground.level.errors import LevelError, Problem
@@ -211,7 +211,7 @@ def _probe_problems(level: Level, world: World) -> Iterator[Problem]:
         max(bb.top for bb in boxes) - min(bb.bottom for bb in boxes),
     )
     for i, actor in enumerate(level.actors):
-        length = controller_config(actor.controller).probe_length
+        length = to_core(actor.controller).probe_length
         if length > size:
             yield Problem(
                 f"actors.{i}.controller.probe_length",
@@ -357,7 +357,7 @@ def _add_actor(world: World, level: Level, actor: Actor) -> Controller:
         world,
         actor.name,
         actor.position,
-        config=controller_config(actor.controller),
+        config=to_core(actor.controller),
         source=source,
         angle=actor.angle,
     )

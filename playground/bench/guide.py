@@ -166,7 +166,7 @@ def _with(level: Level, knob: Knob | None, value: float | bool) -> Level:
         tracking = level.tracking.model_copy(update={"perception": perception})
         return level.model_copy(update={"tracking": tracking})
     actors = [
-        a.model_copy(update={"controller": {**a.controller, knob.name: value}})
+        a.model_copy(update={"controller": a.controller.model_copy(update={knob.name: value})})
         for a in level.actors
     ]
     return level.model_copy(update={"actors": actors})

@@ -14,9 +14,18 @@ ValueError: radius: expected less than half the height (0.9 m), got 1.0
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
-from playground._validate import finite, positive
+from playground.fields import check, param
+from playground.limits import (
+    MAX_ANGULAR_SPEED,
+    MAX_FORCE,
+    MAX_FREQUENCY,
+    MAX_LENGTH,
+    MAX_MASS,
+    MAX_SPEED,
+    MIN_MASS,
+)
 
 __all__ = ["ControllerConfig"]
 
@@ -25,107 +34,163 @@ __all__ = ["ControllerConfig"]
 class ControllerConfig:
     """Body, sensing and force budgets; defaults fit a 70 kg, 1.8 m person.
 
-    Attributes:
-        mass: kg, the body's mass when it is built (``World.set_mass`` may change it later: the
-            controller follows the body's mass, see :attr:`Controller.mass`).
-        height: capsule length, end to end, m.
-        radius: capsule radius, m (less than half the height).
-        lock_rotation: infinite moment of inertia: the capsule never tips (no balance needed).
-        ride_height: distance held from the probe hit to the capsule's centre, m. Above half the
-            height, so the feet hover a few centimetres over the ground and the capsule never
-            scrapes it while walking.
-        probe_length: how far the ground probe reaches from the centre along −up, m.
-        probe_radius: radius of the probe's swept circle, m.
-        hover_frequency: natural frequency of the hover spring, Hz (k = m·(2πf)²).
-        hover_damping: damping ratio of the hover spring (c = 2ζ·m·2πf); 1 is critical, 0 is
-            undamped. The spring is stable while 2πf·dt < :func:`hover_limit` (ζ), which is at
-            least 2.
-        hover_force: the legs' budget: the most the hover pushes with, N. Beyond it the capsule
-            bottoms out and the contact takes the rest (a hard landing, a crushing load).
-        max_slope: steepest walkable ground, rad between its normal and up.
-        max_speed: walking speed at full move input, m/s.
-        drive_time: time constant with which the drive closes the gap to its goal velocity, s.
-        traction: foot friction coefficient: the drive is also bounded by traction × the hover
-            force (no normal force, no traction).
-        ground_force: drive force budget on the ground, N.
-        air_force: steering force budget in the air, N (never used to brake).
-        balance_frequency: natural frequency of the upright PD, Hz.
-        balance_damping: damping ratio of the upright PD.
-        balance_torque: balance torque budget, N·m.
-        balance_loss_time: needing more than the budget this long while supported loses
-            balance, s.
-        settle_speed: below this speed relative to the ground a fallen body counts as still, m/s.
-        settle_spin: below this angular speed a fallen body counts as still, rad/s.
-        settle_time: how long a fallen body must stay still before getting up, s.
-        getup_time: how long getting up takes, s.
-        jump_speed: take-off speed along up relative to the ground, m/s.
-        coyote_time: a jump still works this long after leaving the ground, s.
-        jump_buffer: a jump press is remembered this long before landing, s.
-        grab_reach: how far beyond the head the hands reach, m.
-        grip_force: grip budget (the joint's max force), N.
-        grip_slip: the grip lets go when its anchors drift this far apart, m.
-        climb_speed: speed of the grip along the held body at full climb input, m/s.
-        push_reach: how far beyond the body the arms reach to push, m.
-        push_force: push budget, N.
-        crush_force: crushed when the load from above exceeds this, N.
+    ``mass`` is the body's mass when it is built (``World.set_mass`` may change it later: the
+    controller follows the body's mass, see :attr:`Controller.mass`). ``ride_height`` lies above
+    half the height, so the feet hover a few centimetres over the ground and the capsule never
+    scrapes it while walking. The hover spring is k = m·(2πf)², c = 2ζ·m·2πf, stable while
+    2πf·dt < :func:`hover_limit` (ζ), which is at least 2. Beyond ``hover_force`` the capsule
+    bottoms out and the contact takes the rest (a hard landing, a crushing load). The drive is
+    also bounded by ``traction`` × the hover force (no normal force, no traction).
     """
 
-    mass: float = 70.0
-    height: float = 1.8
-    radius: float = 0.25
-    lock_rotation: bool = False
-    ride_height: float = 0.95
-    probe_length: float = 1.4
-    probe_radius: float = 0.1
-    hover_frequency: float = 5.0
-    hover_damping: float = 1.0
-    hover_force: float = 5000.0
-    max_slope: float = 0.7
-    max_speed: float = 4.0
-    drive_time: float = 0.05
-    traction: float = 1.0
-    ground_force: float = 350.0
-    air_force: float = 70.0
-    balance_frequency: float = 2.5
-    balance_damping: float = 1.5
-    balance_torque: float = 600.0
-    balance_loss_time: float = 0.3
-    settle_speed: float = 0.3
-    settle_spin: float = 0.5
-    settle_time: float = 0.5
-    getup_time: float = 1.0
-    jump_speed: float = 4.0
-    coyote_time: float = 0.1
-    jump_buffer: float = 0.15
-    grab_reach: float = 0.3
-    grip_force: float = 2000.0
-    grip_slip: float = 0.1
-    climb_speed: float = 0.5
-    push_reach: float = 0.5
-    push_force: float = 1000.0
-    crush_force: float = 1500.0
+    mass: float = param(70.0, doc="Mass when built.", unit="kg", ge=MIN_MASS, le=MAX_MASS)
+    height: float = param(1.8, doc="Capsule length, end to end.", unit="m", gt=0.0, le=MAX_LENGTH)
+    radius: float = param(
+        0.25, doc="Capsule radius (less than half the height).", unit="m", gt=0.0, le=MAX_LENGTH
+    )
+    lock_rotation: bool = param(
+        False, doc="Infinite moment of inertia: the capsule never tips (no balance needed)."
+    )
+    ride_height: float = param(
+        0.95,
+        doc="Distance held from the probe hit to the capsule's centre.",
+        unit="m",
+        gt=0.0,
+        le=MAX_LENGTH,
+    )
+    probe_length: float = param(
+        1.4,
+        doc="How far the ground probe reaches from the centre along −up.",
+        unit="m",
+        gt=0.0,
+        le=MAX_LENGTH,
+    )
+    probe_radius: float = param(
+        0.1, doc="Radius of the probe's swept circle.", unit="m", gt=0.0, le=MAX_LENGTH
+    )
+    hover_frequency: float = param(
+        5.0, doc="Natural frequency of the hover spring.", unit="Hz", gt=0.0, le=MAX_FREQUENCY
+    )
+    hover_damping: float = param(
+        1.0, doc="Damping ratio of the hover spring (1: critical, 0: undamped).", ge=0.0
+    )
+    hover_force: float = param(
+        5000.0,
+        doc="The legs' budget: the most the hover pushes with.",
+        unit="N",
+        gt=0.0,
+        le=MAX_FORCE,
+    )
+    max_slope: float = param(
+        0.7,
+        doc="Steepest walkable ground, between its normal and up (below π/2).",
+        unit="rad",
+        gt=0.0,
+    )
+    max_speed: float = param(
+        4.0, doc="Walking speed at full move input.", unit="m/s", gt=0.0, le=MAX_SPEED
+    )
+    drive_time: float = param(
+        0.05,
+        doc="Time constant of the drive closing the gap to its goal velocity.",
+        unit="s",
+        gt=0.0,
+    )
+    traction: float = param(1.0, doc="Foot friction coefficient.", ge=0.0)
+    ground_force: float = param(
+        350.0, doc="Drive force budget on the ground.", unit="N", gt=0.0, le=MAX_FORCE
+    )
+    air_force: float = param(
+        70.0,
+        doc="Steering force budget in the air (never used to brake).",
+        unit="N",
+        ge=0.0,
+        le=MAX_FORCE,
+    )
+    balance_frequency: float = param(
+        2.5, doc="Natural frequency of the upright PD.", unit="Hz", gt=0.0, le=MAX_FREQUENCY
+    )
+    balance_damping: float = param(1.5, doc="Damping ratio of the upright PD.", gt=0.0)
+    balance_torque: float = param(
+        600.0, doc="Balance torque budget.", unit="N·m", gt=0.0, le=MAX_FORCE
+    )
+    balance_loss_time: float = param(
+        0.3,
+        doc="Needing more than the budget this long while supported loses balance.",
+        unit="s",
+        gt=0.0,
+    )
+    settle_speed: float = param(
+        0.3,
+        doc="Below this speed relative to the ground a fallen body counts as still.",
+        unit="m/s",
+        gt=0.0,
+        le=MAX_SPEED,
+    )
+    settle_spin: float = param(
+        0.5,
+        doc="Below this angular speed a fallen body counts as still.",
+        unit="rad/s",
+        gt=0.0,
+        le=MAX_ANGULAR_SPEED,
+    )
+    settle_time: float = param(
+        0.5, doc="How long a fallen body stays still before getting up.", unit="s", gt=0.0
+    )
+    getup_time: float = param(1.0, doc="How long getting up takes.", unit="s", gt=0.0)
+    jump_speed: float = param(
+        4.0,
+        doc="Take-off speed along up relative to the ground.",
+        unit="m/s",
+        gt=0.0,
+        le=MAX_SPEED,
+    )
+    coyote_time: float = param(
+        0.1, doc="A jump still works this long after leaving the ground.", unit="s", ge=0.0
+    )
+    jump_buffer: float = param(
+        0.15, doc="A jump press is remembered this long before landing.", unit="s", ge=0.0
+    )
+    grab_reach: float = param(
+        0.3, doc="How far beyond the head the hands reach.", unit="m", gt=0.0, le=MAX_LENGTH
+    )
+    grip_force: float = param(
+        2000.0, doc="Grip budget (the joint's max force).", unit="N", gt=0.0, le=MAX_FORCE
+    )
+    grip_slip: float = param(
+        0.1,
+        doc="The grip lets go when its anchors drift this far apart.",
+        unit="m",
+        gt=0.0,
+        le=MAX_LENGTH,
+    )
+    climb_speed: float = param(
+        0.5,
+        doc="Speed of the grip along the held body at full climb input.",
+        unit="m/s",
+        ge=0.0,
+        le=MAX_SPEED,
+    )
+    push_reach: float = param(
+        0.5,
+        doc="How far beyond the body the arms reach to push.",
+        unit="m",
+        gt=0.0,
+        le=MAX_LENGTH,
+    )
+    push_force: float = param(1000.0, doc="Push budget.", unit="N", gt=0.0, le=MAX_FORCE)
+    crush_force: float = param(
+        1500.0,
+        doc="Crushed when the load from above exceeds this.",
+        unit="N",
+        gt=0.0,
+        le=MAX_FORCE,
+    )
 
     def __post_init__(self) -> None:
         if not isinstance(self.lock_rotation, bool):
             raise ValueError(f"lock_rotation: expected a bool, got {self.lock_rotation!r}")
-        non_negative = {
-            "hover_damping",
-            "traction",
-            "air_force",
-            "coyote_time",
-            "jump_buffer",
-            "climb_speed",
-        }
-        for f in fields(self):
-            if f.name == "lock_rotation":
-                continue
-            value = getattr(self, f.name)
-            if f.name in non_negative:
-                finite(f.name, value)
-                if value < 0.0:
-                    raise ValueError(f"{f.name}: expected a number >= 0, got {value!r}")
-            else:
-                positive(f.name, value)
+        check(self)
         if self.radius >= self.height / 2.0:
             raise ValueError(
                 f"radius: expected less than half the height ({self.height / 2.0} m), "

@@ -10,6 +10,7 @@ import pytest
 from pydantic import BaseModel, ValidationError
 
 from playground import gravity, intents, movers, perception
+from playground.controller.config import ControllerConfig
 from playground.fields import SPEC, Spec
 from playground.level import schema
 from playground.level.derive import _MODELS, to_core
@@ -31,6 +32,7 @@ CORE_CONFIGS = [
     movers.Elevator,
     intents.Intent,
     intents.Patrol,
+    ControllerConfig,
 ]
 """Every frozen config of the core that a level file sets."""
 
@@ -113,6 +115,9 @@ def test_a_number_key_takes_no_boolean_and_no_string(bad: object) -> None:
         (movers.Circle, "period", 0.0),
         (movers.Elevator, "axis", (0.0, 0.0)),
         (intents.Intent, "move", 1.5),
+        (ControllerConfig, "hover_frequency", 0.0),
+        (ControllerConfig, "mass", 1e7),
+        (ControllerConfig, "radius", 1.0),
     ],
 )
 def test_the_level_refuses_what_the_core_refuses(core: type[Any], key: str, value: Any) -> None:

@@ -27,12 +27,17 @@ CRATE = (
     'shapes = [{{kind = "box", size = [1, 1]}}]\n'
 )
 
+ACTOR = '[[actors]]\nname = "player"\nposition = [0, 1]\ncontroller = {{ mass = {mass} }}\n'
+
 
 @pytest.mark.parametrize(
     ("text", "path"),
     [
         (CRATE.format(mass="true"), "props.0.mass"),
         (CRATE.format(mass='"10.0"'), "props.0.mass"),
+        (CRATE.format(mass='"10"'), "props.0.mass"),
+        (ACTOR.format(mass="true"), "actors.0.controller.mass"),
+        (ACTOR.format(mass='"10"'), "actors.0.controller.mass"),
         ('[settings]\nseconds = "2"\n', "settings.seconds"),
         ("[settings]\nsubsteps = 2.5\n", "settings.substeps"),
         ("[settings]\ncontact_split = 1\n", "settings.contact_split"),
