@@ -116,15 +116,14 @@ def _build(level: Level) -> Scene:
     scene = Scene(level, world)
     static = world.space.static_body
     for shape in level.geometry:
-        world.space.add(*_shapes(static, shape))
+        world.add_static(*_shapes(static, shape))
     for mover in level.movers:
         _add_mover(world, mover)
     for prop in level.props:
         make_prop(world, prop)
     for actor in level.actors:
         scene.controllers[actor.name] = _add_actor(world, level, actor)
-    joints = [_joint(world, joint) for joint in level.joints]
-    world.space.add(*joints)
+    joints = [world.add_constraint(_joint(world, joint)) for joint in level.joints]
     if level.tracking.bodies:
         present = [n for n in level.tracking.bodies if n in world.names]
         if present:

@@ -24,7 +24,7 @@ def _stiff_spring(config: WorldConfig, *, track: bool) -> World:
     world = World(config, gravity=(0.0, 0.0))
     a = world.add_box("a", mass=1.0, size=(0.2, 0.2), position=(0.0, 0.0))
     b = world.add_box("b", mass=1.0, size=(0.2, 0.2), position=(1.0, 0.0))
-    world.space.add(pymunk.DampedSpring(a, b, (0.0, 0.0), (0.0, 0.0), 0.5, 1e9, 0.0))
+    world.add_constraint(pymunk.DampedSpring(a, b, (0.0, 0.0), (0.0, 0.0), 0.5, 1e9, 0.0))
     if track:
         world.track("a")
     return world

@@ -232,7 +232,7 @@ def grip(knobs: Knobs) -> Scene:
     world.add_mover("flyer", Elevator(start=(0.0, 5.0), acceleration=GRIP_ACCELERATION))
     _player(world, (0.0, 5.0 - PLAYER_SIZE[1] / 2))
     player = world.body("player")
-    world.space.add(pymunk.PivotJoint(flyer, player, (0.0, 5.0)))
+    world.add_constraint(pymunk.PivotJoint(flyer, player, (0.0, 5.0)))
     world.track("player", perceive=False)
     n = PLAYER_MASS * (STANDARD_GRAVITY + GRIP_ACCELERATION)
     return Scene("grip", world, ("player",), _constant((0.0, n)), n, 0.5, 1.5, joints=True)

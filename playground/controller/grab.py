@@ -52,7 +52,7 @@ def update_grip(self: Controller, world: World, it: Intent) -> None:
     )
     joint.max_force = cfg.grip_force
     joint.collide_bodies = False
-    world.space.add(joint)
+    world.add_constraint(joint)
     self.joint = joint
     self._held_shape = info.shape
     self.state = State.HANGING
@@ -75,6 +75,6 @@ def climb(self: Controller, world: World, joint: pymunk.PivotJoint, climb: float
 def release(self: Controller, world: World) -> None:
     """Let go: the grip joint leaves the world."""
     if self.joint is not None:
-        world.space.remove(self.joint)
+        world.remove(self.joint)
         self.joint = None
         self._held_shape = None

@@ -29,7 +29,7 @@ from playground.limits import (
     MIN_MOMENT,
 )
 
-__all__ = ["check_body", "check_size", "check_surface", "group", "surfaced"]
+__all__ = ["check_body", "check_shapes", "check_size", "check_surface", "group", "surfaced"]
 
 
 def check_surface(prefix: str, friction: float, elasticity: float) -> None:
@@ -71,6 +71,12 @@ def check_body(name: str, body: pymunk.Body, shapes: Sequence[pymunk.Shape]) -> 
     bounded_vec(f"{name}.velocity", tuple(body.velocity), MAX_SPEED, "m/s")
     bounded(f"{name}.angular_velocity", body.angular_velocity, MAX_ANGULAR_SPEED, "rad/s")
     bounded_vec(f"{name}.force", tuple(body.force), MAX_FORCE, "N")
+    check_shapes(name, body, shapes)
+
+
+def check_shapes(name: str, body: pymunk.Body, shapes: Sequence[pymunk.Shape]) -> None:
+    """Each shape belongs to ``body``, is in no space, and has a surface, radius and points in
+    range (``name`` prefixes the errors)."""
     for i, shape in enumerate(shapes):
         where = f"{name}.shapes[{i}]"
         if not isinstance(shape, pymunk.Shape) or shape.body is not body:

@@ -16,7 +16,9 @@ import pymunk
 from playground._validate import bounded, bounded_vec
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.readings import BodyForces
+from playground.forces.solver import ForceSolver
 from playground.limits import MAX_COORDINATE, MAX_IMPULSE, RUNAWAY_FORCE
+from playground.perception import PerceivedGravity
 from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.physics import PhysicsStage
@@ -35,9 +37,34 @@ class ForceAPI(BodyRegistry):
 
     def track(self, *names: str, perceive: bool = True) -> None:
         """Recover engine forces for these dynamic bodies every step; ``perceive`` also filters
-        their perceived gravity."""
+        their perceived gravity. From the next step on if the world is :attr:`locked`."""
+        if self._locked:
+            for name in names:
+                if name not in self._arriving:
+                    self.body(name)  # KeyError naming the known bodies, now
+            self._defer(lambda: self.track(*names, perceive=perceive))
+            return
         for name in names:
             self._physics.track(self.body(name), perceive)
+
+    @property
+    def solver(self) -> ForceSolver:
+        """The force solver: membership and readings of the tracked bodies (the scalar path's
+        readings are copied in when it serves them)."""
+        self._physics.sync()
+        return self._physics.solver
+
+    @property
+    def perceived(self) -> PerceivedGravity:
+        """Perceived gravity of the tracked bodies (filled from the scalar path when it serves)."""
+        self._physics.sync()
+        return self._physics.perceived
+
+    @property
+    def on_scalar_path(self) -> bool:
+        """Whether the scalar path (plain floats, :mod:`playground.scalar`) serves the tracked
+        bodies in the coming steps (as last planned)."""
+        return self._physics.scalar_on
 
     def apply_force(
         self,

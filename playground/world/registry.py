@@ -1,8 +1,17 @@
-"""The named bodies of one space: adding, looking up and removing them, and putting them to sleep.
+"""The named bodies of one space: adding, looking up and removing them and their joints, and
+putting them to sleep.
 
 :class:`BodyRegistry` is the part of :class:`~playground.world.world.World` that keeps the space
 and the names of its bodies; the world learns of each change through :meth:`BodyRegistry._added`
-and :meth:`BodyRegistry._removed` (its stages follow: gravity registry, tracking, movers).
+and :meth:`BodyRegistry._removed` (its stages follow: gravity registry, tracking, movers). Nothing
+outside the world adds to or removes from its space.
+
+While the world is *locked* (from its gravity stage to the end of a step, see
+:attr:`BodyRegistry.locked`), bodies and static shapes added or removed by a hook join or leave
+when the step ends, as pymunk and Box2D defer changes made from inside their step: every stage of
+one step sees the same bodies. A joint is added or removed at once (the world keeps nothing per
+step about joints, and a controller's grab acts in the step it grabs) unless one of its bodies is
+itself waiting to join.
 
 >>> registry = BodyRegistry()
 >>> _ = registry.add_box("crate", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
@@ -13,13 +22,22 @@ and :meth:`BodyRegistry._removed` (its stages follow: gravity registry, tracking
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from typing import Self
 
 import pymunk
 
 from playground._validate import bounded, bounded_vec, finite, in_range
 from playground.limits import MAX_ANGLE, MAX_COORDINATE, MAX_LENGTH, MAX_MASS, MIN_MASS
 from playground.vec import Vec
-from playground.world.bodies import check_body, check_size, check_surface, group, surfaced
+from playground.world.bodies import (
+    check_body,
+    check_shapes,
+    check_size,
+    check_surface,
+    group,
+    surfaced,
+)
 
 __all__ = ["BodyRegistry"]
 
@@ -34,6 +52,36 @@ class BodyRegistry:
         # their rule and tracked row by name every step.
         self._ids: dict[str, int] = {}
         self._names: dict[int, str] = {}
+        self._locked = False
+        # What a hook changed while the world was locked, in call order, run at the step's end;
+        # the names and the bodies and joints waiting to join, and the names about to leave.
+        self._pending: list[Callable[[], object]] = []
+        self._arriving: set[object] = set()
+        self._leaving: set[str] = set()
+
+    @property
+    def locked(self) -> bool:
+        """Whether the world is inside a step (from its gravity stage on): then bodies, static
+        shapes, tracking and hooks added or removed wait for the step's end."""
+        return self._locked
+
+    def _defer(self, change: Callable[[], object]) -> None:
+        self._pending.append(change)
+
+    def later(self, action: Callable[[Self], object]) -> None:
+        """Run ``action(world)`` when the step ends, after the changes asked for before it (at
+        once if the world is not :attr:`locked`): for a change the world does not defer itself,
+        such as building a controller from a hook."""
+        if self._locked:
+            self._defer(lambda: action(self))
+        else:
+            action(self)
+
+    def _run_pending(self) -> None:
+        """Make the changes a hook asked for while the world was locked, in order."""
+        pending, self._pending = self._pending, []
+        for change in pending:
+            change()
 
     def _added(self, body: pymunk.Body) -> None:
         """A named body joined the space (the world's stages follow)."""
@@ -51,9 +99,15 @@ class BodyRegistry:
         """
         if not isinstance(name, str) or not name:
             raise ValueError(f"name: expected a non-empty string, got {name!r}")
-        if name in self._bodies:
+        if name in self._bodies or name in self._arriving:
             raise ValueError(f"{name}: a body with this name already exists")
         check_body(name, body, shapes)
+        if self._locked:
+            if body in self._arriving:
+                raise ValueError(f"{name}: the body is already waiting to join this world")
+            self._arriving.update((name, body))
+            self._defer(lambda: self._join(name, body, shapes))
+            return body
         self.space.add(body, *shapes)
         self._bodies[name] = body
         self._ids[name] = body.id
@@ -61,19 +115,93 @@ class BodyRegistry:
         self._added(body)
         return body
 
-    def remove(self, name: str) -> None:
-        """Remove a body, its shapes and constraints, and stop tracking it."""
-        body = self._bodies.pop(name)
-        del self._ids[name]
+    def _join(self, name: str, body: pymunk.Body, shapes: tuple[pymunk.Shape, ...]) -> None:
+        self._arriving.difference_update((name, body))
+        self.add(name, body, *shapes)
+
+    def remove(self, item: str | pymunk.Constraint) -> None:
+        """Remove a body by name, with its shapes and joints, and stop tracking it; or remove a
+        joint added with :meth:`add_constraint`."""
+        if isinstance(item, pymunk.Constraint):
+            self._remove_constraint(item)
+            return
+        if item in self._leaving or (item not in self._arriving and item not in self._bodies):
+            self.body(item)  # KeyError naming the known bodies
+            raise KeyError(f"{item}: already removed in this step")
+        if self._locked:
+            self._leaving.add(item)
+            self._defer(lambda: self._leave(item))
+            return
+        body = self._bodies.pop(item)
+        del self._ids[item]
         del self._names[body.id]
         self._removed(body)
-        self.space.remove(*body.shapes, *body.constraints, body)
+        # Only the joints in the space: a joint made on the body but never added is not.
+        joints = set(self.space.constraints).intersection(body.constraints)
+        self.space.remove(*body.shapes, *joints, body)
+
+    def _leave(self, name: str) -> None:
+        self._leaving.discard(name)
+        self.remove(name)
+
+    def add_constraint(self, constraint: pymunk.Constraint) -> pymunk.Constraint:
+        """Add a joint between bodies of this world (or the space's static body).
+
+        >>> registry = BodyRegistry()
+        >>> a = registry.add_box("a", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+        >>> pin = registry.add_constraint(pymunk.PinJoint(a, registry.space.static_body))
+        >>> list(registry.space.constraints) == [pin]
+        True
+        >>> registry.remove(pin)
+        >>> list(registry.space.constraints)
+        []
+        """
+        if not isinstance(constraint, pymunk.Constraint):
+            raise ValueError(f"constraint: expected a pymunk.Constraint, got {constraint!r}")
+        waits = False
+        for end, body in (("a", constraint.a), ("b", constraint.b)):
+            if body in self._arriving:
+                waits = True
+            elif body is not self.space.static_body and body.space is not self.space:
+                raise ValueError(f"constraint.{end}: expected a body of this world, got {body!r}")
+        if constraint in self._arriving or constraint in self.space.constraints:
+            raise ValueError("constraint: the joint is already in this world")
+        if waits:
+            self._arriving.add(constraint)
+            self._defer(lambda: self._arrive(constraint))
+        else:
+            self.space.add(constraint)
+        return constraint
+
+    def _arrive(self, constraint: pymunk.Constraint) -> None:
+        self._arriving.discard(constraint)
+        self.space.add(constraint)
+
+    def _remove_constraint(self, constraint: pymunk.Constraint) -> None:
+        if constraint in self._arriving:
+            self._defer(lambda: self.space.remove(constraint))
+        elif constraint in self.space.constraints:
+            self.space.remove(constraint)
+        else:
+            raise ValueError(f"constraint: {constraint!r} is not in this world")
+
+    def add_static(self, *shapes: pymunk.Shape) -> None:
+        """Add shapes of the space's static body: fixed geometry (m), checked like a body's."""
+        check_shapes("static", self.space.static_body, shapes)
+        if self._locked:
+            self._defer(lambda: self.space.add(*shapes))
+        else:
+            self.space.add(*shapes)
 
     def body(self, name: str) -> pymunk.Body:
         """The body called ``name`` (KeyError naming the known bodies otherwise)."""
         try:
             return self._bodies[name]
         except KeyError:
+            if name in self._arriving:
+                raise KeyError(
+                    f"{name}: added during this step; it joins when the step ends"
+                ) from None
             known = ", ".join(sorted(self._bodies)) or "none"
             raise KeyError(f"no body named {name!r} (known: {known})") from None
 
@@ -149,7 +277,7 @@ class BodyRegistry:
         in_range("radius", radius, 0.0, MAX_LENGTH, "m")
         check_surface("", friction, elasticity)
         seg = surfaced(pymunk.Segment(self.space.static_body, a, b, radius), friction, elasticity)
-        self.space.add(seg)
+        self.add_static(seg)
         return seg
 
     def sleep(self, name: str) -> None:

@@ -92,16 +92,31 @@ class Schedule:
         self.observers: list[Hook] = []
         self.events: list[tuple[float, int, Hook]] = []
 
-    def on(self, stage: Stage, hook: Hook) -> None:
-        """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE)."""
+    @staticmethod
+    def check(stage: Stage) -> None:
+        """Refuse a stage hooks do not run in (the world's own stages)."""
         if stage not in _HOOK_LISTS:
             raise ValueError(f"stage: hooks run in INPUTS, EVENTS, CONTROL or OBSERVE, not {stage}")
+
+    def on(self, stage: Stage, hook: Hook) -> None:
+        """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE)."""
+        self.check(stage)
         self._hooks(stage).append(hook)
         self._replan()
 
     def off(self, stage: Stage, hook: Hook) -> None:
         """Stop running ``hook`` in ``stage``; the stage that is running finishes with the hooks
-        it started with."""
+        it started with.
+
+        >>> schedule = Schedule(replan=lambda: None)
+        >>> def count(world: object) -> None: ...
+        >>> schedule.on(Stage.OBSERVE, count)
+        >>> schedule.off(Stage.OBSERVE, count)
+        >>> schedule.off(Stage.OBSERVE, count)
+        Traceback (most recent call last):
+        ...
+        ValueError: hook: count is not registered in OBSERVE
+        """
         hooks = self._hooks(stage)
         if hook not in hooks:
             name = getattr(hook, "__name__", repr(hook))

@@ -30,7 +30,6 @@ import pymunk.batch as batch
 
 from playground._validate import bounded_vec, in_range
 from playground.forces.ledger import ForceLedger
-from playground.forces.solver import ForceSolver
 from playground.gravity import GravityField, GravityRule, Uniform
 from playground.guard import GUARD_EVERY, RunawayError, state_runaway
 from playground.limits import (
@@ -41,7 +40,7 @@ from playground.limits import (
     MIN_MOMENT,
 )
 from playground.movers import Mover, Path
-from playground.perception import PerceivedGravity, Perception
+from playground.perception import Perception
 from playground.scalar.path import SCALAR_MAX_BODIES
 from playground.vec import Vec
 from playground.world.config import WorldConfig
@@ -176,25 +175,6 @@ class World(ForceAPI):
         )
         self._plan_dirty = False
 
-    @property
-    def solver(self) -> ForceSolver:
-        """The force solver: membership and readings of the tracked bodies (the scalar path's
-        readings are copied in when it serves them)."""
-        self._physics.sync()
-        return self._physics.solver
-
-    @property
-    def perceived(self) -> PerceivedGravity:
-        """Perceived gravity of the tracked bodies (filled from the scalar path when it serves)."""
-        self._physics.sync()
-        return self._physics.perceived
-
-    @property
-    def on_scalar_path(self) -> bool:
-        """Whether the scalar path (plain floats, :mod:`playground.scalar`) serves the tracked
-        bodies in the coming steps (as last planned)."""
-        return self._physics.scalar_on
-
     # -- gravity ---------------------------------------------------------------------------------
 
     @property
@@ -272,22 +252,17 @@ class World(ForceAPI):
     # -- hooks and events ------------------------------------------------------------------------
 
     def on(self, stage: Stage, hook: Hook) -> None:
-        """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE)."""
-        self._schedule.on(stage, hook)
+        """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE); from
+        the next step on if the world is :attr:`locked`."""
+        self._schedule.check(stage)
+        if self._locked:
+            self._defer(lambda: self._schedule.on(stage, hook))
+        else:
+            self._schedule.on(stage, hook)
 
     def off(self, stage: Stage, hook: Hook) -> None:
         """Stop running ``hook`` in ``stage``: the opposite of :meth:`on`. Safe from inside a
-        step: the stage that is running finishes with the hooks it started with.
-
-        >>> world = World()
-        >>> def count(w: World) -> None: ...
-        >>> world.on(Stage.OBSERVE, count)
-        >>> world.off(Stage.OBSERVE, count)
-        >>> world.off(Stage.OBSERVE, count)
-        Traceback (most recent call last):
-        ...
-        ValueError: hook: count is not registered in OBSERVE
-        """
+        step: the stage that is running finishes with the hooks it started with."""
         self._schedule.off(stage, hook)
 
     def at(self, t: float, event: Hook) -> None:
@@ -320,40 +295,48 @@ class World(ForceAPI):
         events = schedule.events
         if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
             run(Stage.EVENTS, schedule.run_events, self)
-        # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
-        field = None
-        if gravity.active:
-            field = run(Stage.GRAVITY, gravity.apply, self.time)
-        # 4. movers: kinematic bodies get the velocity that reaches their next pose
-        if self._movers:
-            run(Stage.MOVERS, self._drive_movers)
-        # 5. control: controllers sense and put their forces in the ledger
-        if schedule.controls:
-            run(Stage.CONTROL, run_hooks, schedule.controls, self)
-        # 6. physics: flush forces, step the space (re-applying forces every substep)
-        run(Stage.PHYSICS, physics.step, field)
-        # 7. forces: reverse integration for tracked bodies
-        if physics.solver.bodies:
-            run(Stage.FORCES, physics.solve)
-        # 8. filter: perceived gravity for the bodies that perceive
-        if physics.perceivers:
-            run(Stage.FILTER, physics.filter)
-        if len(self.ledger):
-            self.ledger.clear()
-            self._replan()
-        self.steps += 1
-        # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
-        self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
-        # the guard: nothing non-finite or runaway reaches the observers
-        if physics.solver.bodies and self._config.guard:
-            bad = physics.runaway()
-            if bad is not None:
-                self._runaway(*bad)
-        if self.steps >= self._guard_next:
-            self._guard_all()
-        # 9. observe: recorders, checks, views — read-only
-        if schedule.observers:
-            run(Stage.OBSERVE, run_hooks, schedule.observers, self)
+        # From here to the step's end the world is locked: what a hook adds or removes waits for
+        # the end, so every stage of this step sees the same bodies.
+        self._locked = True
+        try:
+            # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
+            field = None
+            if gravity.active:
+                field = run(Stage.GRAVITY, gravity.apply, self.time)
+            # 4. movers: kinematic bodies get the velocity that reaches their next pose
+            if self._movers:
+                run(Stage.MOVERS, self._drive_movers)
+            # 5. control: controllers sense and put their forces in the ledger
+            if schedule.controls:
+                run(Stage.CONTROL, run_hooks, schedule.controls, self)
+            # 6. physics: flush forces, step the space (re-applying forces every substep)
+            run(Stage.PHYSICS, physics.step, field)
+            # 7. forces: reverse integration for tracked bodies
+            if physics.solver.bodies:
+                run(Stage.FORCES, physics.solve)
+            # 8. filter: perceived gravity for the bodies that perceive
+            if physics.perceivers:
+                run(Stage.FILTER, physics.filter)
+            if len(self.ledger):
+                self.ledger.clear()
+                self._replan()
+            self.steps += 1
+            # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
+            self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
+            # the guard: nothing non-finite or runaway reaches the observers
+            if physics.solver.bodies and self._config.guard:
+                bad = physics.runaway()
+                if bad is not None:
+                    self._runaway(*bad)
+            if self.steps >= self._guard_next:
+                self._guard_all()
+            # 9. observe: recorders, checks, views — read-only
+            if schedule.observers:
+                run(Stage.OBSERVE, run_hooks, schedule.observers, self)
+        finally:
+            self._locked = False
+        if self._pending:
+            self._run_pending()
 
     def run(self, seconds: float) -> None:
         """Step for ``seconds`` of simulated time (rounded to whole steps)."""

@@ -60,7 +60,7 @@ def test_seesaw_tips_toward_the_side_the_player_stands_on() -> None:
         world = World()
         world.add_static_segment((-10.0, 0.0), (10.0, 0.0))
         plank = world.add_box("plank", mass=40.0, size=(6.0, 0.1), position=(0.0, 1.0))
-        world.space.add(pymunk.PivotJoint(world.space.static_body, plank, (0.0, 1.0)))
+        world.add_constraint(pymunk.PivotJoint(world.space.static_body, plank, (0.0, 1.0)))
         player = Controller(world, "player", (2.0 * side, 1.05 + 0.95))
         world.run(1.0)
         assert player.state is State.GROUNDED

@@ -98,7 +98,7 @@ def platform(cfg: WorldConfig) -> World:
 def planet(cfg: WorldConfig) -> World:
     """Boxes on a small planet with a radial field (per-body gravity forces)."""
     world = World(cfg, gravity=Radial(center=(0.0, 0.0), surface_gravity=G, radius=5.0))
-    world.space.add(pymunk.Circle(world.space.static_body, 5.0))
+    world.add_static(pymunk.Circle(world.space.static_body, 5.0))
     world.add_box("box", mass=2.0, size=(1.0, 1.0), position=(0.0, 5.55))
     world.add_box("side", mass=1.0, size=(1.0, 1.0), position=(5.6, 0.3), angle=math.pi / 2)
     return world
@@ -161,7 +161,7 @@ def pendulum(cfg: WorldConfig, swing: bool) -> tuple[World, pymunk.PivotJoint]:
     world = World(cfg)
     bob = world.add_box("bob", mass=2.5, size=(0.4, 0.4), position=(0.0, -1.0))
     joint = pymunk.PivotJoint(world.space.static_body, bob, (0.0, 0.0), (0.0, 1.0))
-    world.space.add(joint)
+    world.add_constraint(joint)
     if swing:
         bob.velocity = (3.0, 0.0)
         bob.angular_velocity = 3.0

@@ -138,7 +138,7 @@ SLEEP_CASES = {
     "alone": ("1.0", 'world.sleep("c")\nassert world.body("c").is_sleeping'),
     "jointed": (
         "1.0",
-        'world.space.add(pymunk.PinJoint(world.body("a"), world.body("c")))\n'
+        'world.add_constraint(pymunk.PinJoint(world.body("a"), world.body("c")))\n'
         'world.sleep("c")\nassert world.body("a").is_sleeping',
     ),
     "each of a group in turn": ("1.0", 'world.sleep("b")\nworld.sleep("a")\nworld.sleep("c")'),
