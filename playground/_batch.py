@@ -16,6 +16,8 @@ from numpy.typing import NDArray
 _F = batch.BodyFields
 _READ = _F.BODY_ID | _F.VELOCITY | _F.ANGULAR_VELOCITY | _F.FORCE | _F.TORQUE
 _READ_POS = _F.BODY_ID | _F.POSITION
+_READ_ALL = _READ | _F.POSITION
+"""A read with positions: x, y, then the state columns (batch packs fields in flag order)."""
 _WRITE = _F.FORCE | _F.TORQUE
 _A = batch.ArbiterFields
 _ARBITERS = _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.IS_FIRST_CONTACT | _A.NORMAL
@@ -27,20 +29,29 @@ class BodyRows:
     ``state`` columns: vx, vy, w, fx, fy, torque.
     """
 
-    __slots__ = ("_in", "_out", "ids", "state")
+    __slots__ = ("_in", "_out", "ids", "positions", "state")
 
     def __init__(self) -> None:
         self._in = batch.Buffer()
         self._out = batch.Buffer()
         self.ids: NDArray[np.uintp] = np.zeros(0, dtype=np.uintp)
         self.state: NDArray[np.float64] = np.zeros((0, 6))
+        self.positions: NDArray[np.float64] = np.zeros((0, 2))
+        """x, y (m) of each row, from the last read with ``positions``."""
 
-    def read(self, space: pymunk.Space) -> None:
-        """Read every body (copies: the batch buffer is reused)."""
+    def read(self, space: pymunk.Space, positions: bool = False) -> None:
+        """Read every body, with its position too if ``positions`` (copies: the batch buffer is
+        reused)."""
         self._in.clear()
-        batch.get_space_bodies(space, _READ, self._in)
+        batch.get_space_bodies(space, _READ_ALL if positions else _READ, self._in)
         self.ids = np.frombuffer(self._in.int_buf(), dtype=np.uintp).copy()
-        self.state = np.frombuffer(self._in.float_buf(), dtype=np.float64).reshape(-1, 6).copy()
+        floats = np.frombuffer(self._in.float_buf(), dtype=np.float64)
+        if positions:
+            rows = floats.reshape(-1, 8).copy()
+            self.positions = rows[:, 0:2]
+            self.state = rows[:, 2:8]
+        else:
+            self.state = floats.reshape(-1, 6).copy()
 
     def read_velocities(self, space: pymunk.Space) -> tuple[NDArray[np.uintp], NDArray[np.float64]]:
         """Ids and (vx, vy, w) rows, read now (copies)."""

@@ -413,16 +413,21 @@ def _gravity_rule_ignored() -> Iterator[None]:
     believes it)."""
 
     def make(original: Callable[..., Any]) -> Callable[..., Any]:
-        def apply_gravity(self: Any, t: float) -> Any:
+        def without_rules(self: Any, *args: Any) -> Any:
             rules, self._rules = self._rules, {}
             try:
-                return original(self, t)
+                return original(self, *args)
             finally:
                 self._rules = rules
 
-        return apply_gravity
+        return without_rules
 
-    with _replaced(gravity_stage.GravityStage, "apply", make):
+    # apply: the corrections in a uniform field; forces_at: a field that varies in space, which
+    # the physics stage evaluates after the gravity stage.
+    with (
+        _replaced(gravity_stage.GravityStage, "apply", make),
+        _replaced(gravity_stage.GravityStage, "forces_at", make),
+    ):
         yield
 
 

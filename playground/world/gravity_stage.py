@@ -2,10 +2,10 @@
 
 A field uniform in space is ``space.gravity`` (pymunk integrates it at no cost); a body with its
 own rule then gets one correction force, m·(g_rule − g_space), in plain floats. A field that
-varies in space is evaluated once per step at every dynamic body, vectorised, and handed to the
-physics stage as one force row per body; while the scalar path serves the tracked bodies and the
-named dynamic bodies are few, it is evaluated body by body in plain floats instead
-(:mod:`playground.scalar.field`). The stage runs only when one of the two is needed.
+varies in space is evaluated once per step at every dynamic body, vectorised, at the positions of
+the physics stage's one batch read (:meth:`GravityStage.forces_at`); while the scalar path serves
+the tracked bodies and the named dynamic bodies are few, it is evaluated body by body in plain
+floats instead (:mod:`playground.scalar.field`). The stage runs only when one of the two is needed.
 
 >>> import pymunk
 >>> from playground.forces import ForceLedger
@@ -23,10 +23,9 @@ from collections.abc import Callable
 
 import numpy as np
 import pymunk
-import pymunk.batch as batch
 from numpy.typing import NDArray
 
-from playground._batch import lookup, read_positions
+from playground._batch import lookup
 from playground.forces.ledger import Category, ForceLedger
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
 from playground.scalar.field import PlainField, PointField, point_field, ruled
@@ -34,8 +33,11 @@ from playground.scalar.path import FieldOnBodies
 from playground.vec import Vec
 
 __all__ = ["FieldForces", "GravityStage"]
-FieldForces = tuple[NDArray[np.uintp], NDArray[np.float64]]
-"""The body ids of one batch read and the field's force (N) on each, one (fx, fy) row per id."""
+FieldForces = Callable[
+    [NDArray[np.uintp], NDArray[np.float64]], tuple[NDArray[np.intp], NDArray[np.float64]]
+]
+"""A field that varies in space, at the bodies of one batch read: given the read's body ids and
+their (x, y) rows (m), the rows that are named dynamic bodies and the field's force (N) on each."""
 
 _DEFAULT_RULE = GravityRule()
 """The rule of a body that has none (frozen, so one instance serves every read)."""
@@ -63,7 +65,7 @@ class GravityStage:
         self._rules: dict[int, GravityRule] = {}
         self.active = False
         """Whether the stage runs: a field that is not constant, or bodies with their own rule."""
-        self._pos_buffer = batch.Buffer()
+        self._t = 0.0  # s: the time of the last apply, for forces_at
         self._plain_on = False
         self._point: PointField | None = point_field(self.field)
         self._plain: PlainField | None = None
@@ -170,8 +172,8 @@ class GravityStage:
 
     def apply(self, t: float) -> FieldForces | FieldOnBodies | None:
         """The stage at time ``t`` (s): set ``space.gravity`` and put the rules' corrections in
-        the ledger; for a field that varies in space return its force on every body (batch rows,
-        or body by body while :meth:`use_plain` is on)."""
+        the ledger; for a field that varies in space return its force on every body (body by
+        body while :meth:`use_plain` is on), or :meth:`forces_at` for the physics stage's read."""
         if self._registry_dirty:
             self._refresh_registry()
         g_space = self.space_gravity(t)
@@ -197,8 +199,18 @@ class GravityStage:
                 assert self._point is not None
                 self._plain = PlainField(self._point, self._reg_bodies)
             return self._plain.forces(t)
-        # A field that varies in space: one vectorised evaluation at every dynamic body.
-        ids, pos = read_positions(self.space, self._pos_buffer)
+        # A field that varies in space: one vectorised evaluation at every dynamic body, at the
+        # positions of the physics stage's batch read (one read for positions, velocities and
+        # forces, after the controllers).
+        self._t = t
+        return self.forces_at
+
+    def forces_at(
+        self, ids: NDArray[np.uintp], pos: NDArray[np.float64]
+    ) -> tuple[NDArray[np.intp], NDArray[np.float64]]:
+        """The field's force (N) on the named dynamic bodies among ``ids`` at ``pos`` (m) at the
+        time of the last :meth:`apply`: their rows in the read, and one (fx, fy) row each."""
+        t = self._t
         cache = self._field_rows
         if cache is None or not np.array_equal(cache[0], ids):
             # Row order only changes when bodies are added, removed, sleep or wake.
@@ -212,10 +224,7 @@ class GravityStage:
         g = self.field.at(np.take(pos, rows, axis=0), t)
         if self._rules:
             g = apply_rules(g, scale, direction)
-        # One row per body of the read (zero for static, kinematic and unnamed bodies).
-        force = np.zeros((len(ids), 2))
-        force[rows] = g * mass
-        return ids, force
+        return rows, g * mass
 
     def _refresh_registry(self) -> None:
         """Sorted ids, masses and rules of every named dynamic body, for vectorised gravity."""

@@ -20,7 +20,7 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
-from playground._batch import BodyRows, lookup
+from playground._batch import BodyRows
 from playground.forces.ledger import ForceLedger
 from playground.forces.solver import ForceSolver
 from playground.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
@@ -169,35 +169,36 @@ class PhysicsStage:
         # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
         # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
         scalar = self.scalar_on
+        write = False  # whether a substep after the first must write the forces again
         if scalar:
+            assert field is None or not callable(field)
             if field is not None:
-                assert not isinstance(field, tuple)
                 PlainField.write(field, sleeping=self.solver.check_sleep)
             self.scalar.before_step(field)
             self._scalar_synced = False
         elif field is not None or self.solver.bodies or n > 1:
-            assert field is None or isinstance(field, tuple)
-            self._rows.read(self.space)
-            field_rows: NDArray[np.float64] | None
-            if field is not None and np.array_equal(field[0], self._rows.ids):
-                field_rows = field[1]  # same read order (the usual case): no re-keying
-                self._rows.state[:, 3:5] += field_rows
-                self._write_forces()
-            elif field is not None:
-                field_ids, forces = field
-                at = lookup(np.sort(field_ids), self._rows.ids)
-                order = np.argsort(field_ids)
-                hit = np.nonzero(at >= 0)[0]
-                field_rows = np.zeros((len(self._rows.ids), 2))
-                field_rows[hit] = forces[order[at[hit]]]
-                self._rows.state[:, 3:5] += field_rows
-                self._write_forces()
+            assert field is None or callable(field)
+            rows = self._rows
+            field_rows: NDArray[np.float64] | None = None
+            if field is None:
+                rows.read(self.space)
             else:
-                field_rows = None
+                # One read serves the field and the forces: positions come with the state.
+                rows.read(self.space, positions=True)
+                at, force = field(rows.ids, rows.positions)
+                rows.state[at, 3:5] += force
+                if self.solver.bodies:
+                    # The solver tells the field's part of the force from the rest.
+                    field_rows = np.zeros((len(rows.ids), 2))
+                    field_rows[at] = force
+            # pymunk cleared every force after its last step: write them back only if one is set.
+            write = bool(rows.state[:, 3:6].any())
+            if field is not None and write:
+                self._write_forces()
             if self.solver.bodies:
-                self.solver.before_step(self._rows.ids, self._rows.state, field_rows)
+                self.solver.before_step(rows.ids, rows.state, field_rows)
         for k in range(n):
-            if k > 0:
+            if k > 0 and write:
                 self._write_forces()
             # Chipmunk rescales warm starts by h / (its last step) when the length changes.
             rescaled = self.config.contact_split and self.space.current_time_step != h

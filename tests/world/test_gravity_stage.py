@@ -6,6 +6,7 @@ from __future__ import annotations
 import pymunk
 import pytest
 
+from playground._batch import BodyRows
 from playground.forces import Category
 from playground.gravity import GravityRule, Radial, Uniform
 from playground.world.world import World
@@ -44,16 +45,18 @@ def test_a_rule_in_a_uniform_field_is_one_passive_correction_force() -> None:
     assert world.body("a").velocity.y == pytest.approx(-G / 2, rel=1e-9)
 
 
-def test_a_field_that_varies_hands_one_force_row_per_body() -> None:
-    """Law: for a field that varies in space the stage returns, for every body of the read,
-    its field force (m·g at its position for a named dynamic body, zero for a kinematic one)."""
+def test_a_field_that_varies_is_evaluated_at_the_bodies_of_one_read() -> None:
+    """Law: for a field that varies in space the stage hands the physics stage an evaluation at
+    the bodies of its batch read: the rows of the named dynamic bodies, with m·g at each one's
+    position, and none for a kinematic body."""
     world = World(gravity=Radial(radius=1.0))
     world.add_box("a", mass=3.0, size=(0.2, 0.2), position=(0.0, 2.0))
     world.add("k", pymunk.Body(body_type=pymunk.Body.KINEMATIC))
     field = world._gravity.apply(0.0)
-    assert field is not None
-    ids, force = field
-    by_id = dict(zip(ids.tolist(), force.tolist(), strict=True))
+    assert callable(field)
+    rows = BodyRows()
+    rows.read(world.space, positions=True)
+    at, force = field(rows.ids, rows.positions)
+    by_id = dict(zip(rows.ids[at].tolist(), force.tolist(), strict=True))
     gx, gy = world.gravity_at("a")
-    assert by_id[world.body("a").id] == [3.0 * gx, 3.0 * gy]
-    assert by_id[world.body("k").id] == [0.0, 0.0]
+    assert by_id == {world.body("a").id: [3.0 * gx, 3.0 * gy]}

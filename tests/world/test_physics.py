@@ -4,8 +4,10 @@ and the scene, the state moves with a switch, and a runaway reading is reported 
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
+import pymunk.batch as batch
 import pytest
 from numpy.typing import NDArray
 
@@ -100,3 +102,62 @@ def test_a_runaway_reading_names_its_body() -> None:
     physics.solver.engine[1, 1] = math.nan
     body_id, column, value, _ = physics.runaway() or (0, ("", "", ""), 0.0, 0.0)
     assert body_id == world.body("b1").id and column[0] == "engine force" and math.isnan(value)
+
+
+def _untracked_pile(n: int, config: WorldConfig | None = None) -> World:
+    world = World(config)
+    world.add_static_segment((-50.0, 0.0), (50.0, 0.0))
+    for i in range(n):
+        world.add_box(f"b{i}", mass=1.0, size=(0.5, 0.5), position=(0.6 * i - 0.3 * n, 0.25))
+    return world
+
+
+def _count_batch_calls(monkeypatch: pytest.MonkeyPatch) -> dict[str, int]:
+    """Count the batch reads and writes from now on."""
+    counts = {"read": 0, "write": 0}
+    read, write = batch.get_space_bodies, batch.set_space_bodies
+
+    def counted_read(*args: Any) -> Any:
+        counts["read"] += 1
+        return read(*args)
+
+    def counted_write(*args: Any) -> Any:
+        counts["write"] += 1
+        return write(*args)
+
+    monkeypatch.setattr(batch, "get_space_bodies", counted_read)
+    monkeypatch.setattr(batch, "set_space_bodies", counted_write)
+    return counts
+
+
+def test_a_field_that_varies_costs_one_batch_read_and_one_write(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Law: a per-body field on the batch path is evaluated at the positions of the physics
+    stage's own read (positions, velocities and forces in one batch read) and written in one
+    batch write, and the bodies fall as in the field."""
+    world = _untracked_pile(30, WorldConfig(guard=False))
+    world.gravity = Radial(center=(0.0, -1e5), radius=1e5, softening=0.0)
+    world.step()
+    counts = _count_batch_calls(monkeypatch)
+    world.step()
+    assert counts == {"read": 1, "write": 1}
+    free = world.add_box("free", mass=2.0, size=(0.5, 0.5), position=(0.0, 20.0))
+    world.step()
+    world.step()
+    assert free.velocity.y == pytest.approx(-2 * world.config.dt * 9.81, rel=1e-3)
+
+
+def test_substeps_write_the_forces_again_only_when_a_body_has_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Law: with substeps the forces are written again before each later substep (pymunk clears
+    them after each), but not when no body has a force: then there is nothing to write."""
+    world = _untracked_pile(3, WorldConfig(substeps=3, guard=False))
+    world.step()
+    counts = _count_batch_calls(monkeypatch)
+    world.step()
+    assert counts == {"read": 1, "write": 0}
+    world.apply_force("b0", (1.0, 0.0))
+    world.step()
+    assert counts == {"read": 2, "write": 2}
