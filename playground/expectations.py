@@ -21,7 +21,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from playground.filters import FilterChain, Median3, OneEuroFilter
+from playground.filters.chain import FilterChain
+from playground.filters.median import Median3
+from playground.filters.one_euro import OneEuroFilter
 from playground.level.document import Level
 from playground.level.expect import Expectation, Reading
 from playground.quantities import CHECKED, QUANTITIES
