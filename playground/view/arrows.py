@@ -1,11 +1,11 @@
 """Force arrows that read at any zoom: their scale, their layout and the peak held between frames.
 
-Scale: a body's weight ``m·g₀`` (g₀ = 9.81 m/s², a fixed reference, so a body whose gravity is
-nullified still has a scale) is drawn ``WEIGHT_BODY`` times the body's own size on screen, kept
-between ``MIN_WEIGHT_PX`` and ``MAX_WEIGHT_PX``: zooming in makes arrows longer with the body, a
-5 t whale and a 10 kg crate both get readable arrows. With ``x = |F| / (m·g₀)`` an arrow is
-``W·x`` long up to one weight and ``W·(1 + ln x)`` beyond, capped at ``MAX_WEIGHTS·W``: a tenfold
-spike is 3.3 weights long instead of leaving the window.
+Scale: a body's weight ``m·g₀`` (g₀ the standard gravity, a fixed reference, so a body whose
+gravity is nullified still has a scale) is drawn ``WEIGHT_BODY`` times the body's own size on
+screen, kept between ``MIN_WEIGHT_PX`` and ``MAX_WEIGHT_PX``: zooming in makes arrows longer with
+the body, a 5 t whale and a 10 kg crate both get readable arrows. With ``x = |F| / (m·g₀)`` an
+arrow is ``W·x`` long up to one weight and ``W·(1 + ln x)`` beyond, capped at ``MAX_WEIGHTS·W``:
+a tenfold spike is 3.3 weights long instead of leaving the window.
 
 >>> round(arrow_length(98.1, 10.0, 60.0), 6), round(arrow_length(5000 * 9.81, 5000.0, 60.0), 6)
 (60.0, 60.0)
@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 
 import pymunk
 
+from playground.gravity import STANDARD_GRAVITY
 from playground.vec import Vec
 from playground.world.world import World
 
@@ -43,7 +44,7 @@ __all__ = [
     "weight_pixels",
 ]
 
-G0 = 9.81  # m/s²: the reference weight per kilogram for arrow scaling
+G0 = STANDARD_GRAVITY  # m/s²: the reference weight per kilogram for arrow scaling
 WEIGHT_BODY = 0.8  # one weight is this many times the body's size on screen …
 MIN_WEIGHT_PX = 36.0  # px: … but never shorter (a far-away body's arrows still read) …
 MAX_WEIGHT_PX = 140.0  # px: … nor longer (a close-up whale's arrows stay in the window)
