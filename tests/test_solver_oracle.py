@@ -164,9 +164,10 @@ the same order, except magnitudes (``math.hypot`` against numpy's complex ``abs`
 differ in the last place; the 1€ filter's feedback keeps that at round-off."""
 
 
-KINDS = ("uniform", "split", "field")
+KINDS = ("uniform", "split", "field", "substeps")
 """Scenes: uniform gravity; the contact split on (arbiters kept 1 or 3 steps); a radial field
-(its forces per body) with some bodies given their own direction."""
+(its forces per body) with some bodies given their own direction; 2 or 3 substeps with the split
+on and forces set straight on bodies (re-applied before every substep)."""
 
 
 def scene(
@@ -175,11 +176,17 @@ def scene(
     """A random scene stepped STEPS times: bodies spawned, removed and put to sleep. Yields the
     world and its oracle after every step, with the readings held from before it."""
     rng = random.Random(seed)
-    split = kind == "split"
-    cfg = WorldConfig(damping=rng.choice([1.0, 0.8, 0.3]), sleep_time=0.3, contact_split=split)
+    split = kind in ("split", "substeps")
+    substeps = rng.choice([2, 3]) if kind == "substeps" else 1
+    cfg = WorldConfig(
+        damping=rng.choice([1.0, 0.8, 0.3]),
+        sleep_time=0.3,
+        contact_split=split,
+        substeps=substeps,
+    )
     world = World(cfg)
     world.scalar_max_bodies = scalar_max
-    if split:
+    if kind == "split":
         world.space.collision_persistence = rng.choice([1, 3])
     if kind == "field":
         # A planet far below: gravity about 9.8 m/s², its direction and size vary over the scene.
@@ -208,6 +215,10 @@ def scene(
             body = world.body(rng.choice(sorted(oracle.tracked - oracle.pushed)))
             if not body.is_sleeping and touches_only_static(body):
                 body.sleep()
+        if kind == "substeps" and rng.random() < 0.5:
+            body = world.body(rng.choice(world.names))
+            if not body.is_sleeping:
+                body.force = (rng.uniform(-30.0, 30.0), rng.uniform(-30.0, 30.0))
         held = {n: world.forces(n) for n in oracle.tracked}
         world.step()
         yield world, oracle, held
@@ -248,7 +259,7 @@ def _same(a: tuple[float, float], b: tuple[float, float]) -> bool:
     return all(x == y or (math.isnan(x) and math.isnan(y)) for x, y in zip(a, b, strict=True))
 
 
-SEEDS = {"uniform": range(5), "split": range(3), "field": range(3)}
+SEEDS = {"uniform": range(5), "split": range(3), "field": range(3), "substeps": range(3)}
 
 
 @pytest.mark.parametrize(("kind", "seed"), [(kind, seed) for kind in KINDS for seed in SEEDS[kind]])
@@ -291,4 +302,4 @@ def test_scalar_and_vector_paths_give_one_answer(kind: str, seed: int) -> None:
                 e = scalar.solver.engine[row]
                 assert _close((float(e[0]), float(e[1])), scalar.forces(name).engine), name
     assert served > STEPS  # the scalar path served every step of one run, some of the other
-    assert (split_known > STEPS) == (kind == "split")
+    assert (split_known > STEPS) == (kind in ("split", "substeps"))

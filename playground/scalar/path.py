@@ -77,6 +77,7 @@ class ScalarPath:
         self._median = False
         self._dt = _NAN
         self._field = False
+        self._summed = 0
         self._contacts = ContactSums()
 
     # -- hand-off with the vectorised path ----------------------------------------------------
@@ -107,6 +108,7 @@ class ScalarPath:
         """v₀, ω₀ and the forces about to be integrated, read from each body; ``field``: the
         force of a field that varies in space on each body, included in those forces."""
         self._field = field is not None
+        self._summed = 0
         split = self.contact_split
         for r in self.rows:
             b = r.body
@@ -121,30 +123,49 @@ class ScalarPath:
                 r.jx = r.jy = r.jnx = r.jny = 0.0
                 r.unknown = False
 
-    def after_substep(self, space: pymunk.Space, *, stamp: int = 0, rescaled: bool = False) -> None:
-        """Velocities after the (single) substep; a body asleep after it has no reading. With the
-        contact split, its arbiter impulses (``stamp``, ``rescaled``: see
-        :meth:`ForceSolver.after_substep`)."""
+    def after_substep(
+        self, space: pymunk.Space, *, last: bool = True, stamp: int = 0, rescaled: bool = False
+    ) -> None:
+        """Velocities after a substep (summed for the damping term unless it is the ``last``); a
+        body asleep after any substep has no reading. With the contact split, its arbiter
+        impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
         check_sleep = self.check_sleep
+        first_sum = self._summed == 0
         for r in self.rows:
             b = r.body
             r.vx, r.vy = b.velocity
             r.vw = b.angular_velocity
+            if not last:
+                if first_sum:
+                    r.qx, r.qy, r.qw = r.vx, r.vy, r.vw
+                else:
+                    r.qx += r.vx
+                    r.qy += r.vy
+                    r.qw += r.vw
             if check_sleep and b.is_sleeping:
                 r.seen = False
+        if not last:
+            self._summed += 1
         if self.contact_split:
             self._contacts.accumulate(self.rows, space, stamp, rescaled)
 
     def finish(
-        self, *, dt: float, damping: float, space_gravity: tuple[float, float], ledger: ForceLedger
+        self,
+        *,
+        dt: float,
+        damping: float,
+        space_gravity: tuple[float, float],
+        ledger: ForceLedger,
+        substeps: int = 1,
     ) -> None:
-        """The readings of this step (see :meth:`ForceSolver.finish`; one substep)."""
+        """The readings of this step (see :meth:`ForceSolver.finish`)."""
         if dt != self._dt:
             for r in self.rows:
                 r.m_dt = r.m / dt
                 r.i_dt = 0.0 if r.locked else r.moment / dt
             self._dt = dt
-        d = damping**dt
+        d = damping ** (dt / substeps)
+        summed = self._summed > 0
         gx, gy = space_gravity
         field = self._field
         parts = {body_id: p for body_id, p in ledger.items()} if len(ledger) else None
@@ -157,9 +178,14 @@ class ScalarPath:
             dvw = r.vw - r.v0w
             if d != 1.0:
                 k = 1.0 - d
-                dvx += k * r.v0x
-                dvy += k * r.v0y
-                dvw += k * r.v0w
+                if summed:
+                    dvx += k * (r.v0x + r.qx)
+                    dvy += k * (r.v0y + r.qy)
+                    dvw += k * (r.v0w + r.qw)
+                else:
+                    dvx += k * r.v0x
+                    dvy += k * r.v0y
+                    dvw += k * r.v0w
             wx, wy = r.m * gx, r.m * gy
             ex = dvx * r.m_dt - r.fx - wx
             ey = dvy * r.m_dt - r.fy - wy

@@ -56,6 +56,9 @@ class Row:
         "moment",
         "px",
         "py",
+        "qw",
+        "qx",
+        "qy",
         "s0",
         "s1",
         "s2",
@@ -84,8 +87,9 @@ class Row:
         self.body = body
         self.m = self.moment = self.inv_m = self.m_dt = self.i_dt = 0.0
         self.locked = False
-        # inputs: v₀, ω₀, v, ω after the substep, forces integrated, the field's part of them
+        # inputs: v₀, ω₀, v, ω after the last substep, forces integrated, the field's part
         self.v0x = self.v0y = self.v0w = self.vx = self.vy = self.vw = 0.0
+        self.qx = self.qy = self.qw = 0.0  # Σ v, ω over the substeps but the last
         self.fx = self.fy = self.ft = 0.0
         self.ffx = self.ffy = 0.0
         self.seen = self.valid = False

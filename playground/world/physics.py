@@ -4,9 +4,9 @@ filter what the bodies feel.
 Three stages of the step live here. PHYSICS writes the ledger's forces, the field's forces and any
 force set straight on a body before every substep (pymunk clears them after each) and steps the
 space; FORCES recovers each tracked body's engine forces by reverse integration; FILTER turns them
-into perceived gravity. Few tracked bodies with one substep, in a field uniform in space or one the
-gravity stage evaluates body by body, are served by the scalar path in plain floats
-(:mod:`playground.scalar`), contact split included; the rest by numpy and ``pymunk.batch``
+into perceived gravity. Few tracked bodies (and with substeps, few bodies), in a field uniform in
+space or one the gravity stage evaluates body by body, are served by the scalar path in plain
+floats (:mod:`playground.scalar`), contact split included; the rest by numpy and ``pymunk.batch``
 (:class:`~playground.forces.solver.ForceSolver`, :class:`~playground.perception.PerceivedGravity`).
 Both paths give the same readings; the state moves with a switch.
 """
@@ -82,12 +82,14 @@ class PhysicsStage:
     # -- the path --------------------------------------------------------------------------------
 
     def choose_path(self, max_bodies: int, plain_gravity: bool) -> None:
-        """Serve the tracked bodies on the scalar path if they are at most ``max_bodies`` with one
-        substep and ``plain_gravity`` (the gravity stage can hand its forces body by body, see
-        :meth:`GravityStage.plain_ready`); on the batch path otherwise."""
+        """Serve the tracked bodies on the scalar path if they are at most ``max_bodies`` and
+        ``plain_gravity`` (the gravity stage can hand its forces body by body, see
+        :meth:`GravityStage.plain_ready`), and with substeps, the space holds at most
+        ``max_bodies`` bodies (every body's force is re-applied before each substep); on the
+        batch path otherwise."""
         scalar = (
             0 < len(self.solver.bodies) <= max_bodies
-            and self.config.substeps == 1
+            and (self.config.substeps == 1 or len(self.space.bodies) <= max_bodies)
             and plain_gravity
         )
         if scalar != self.scalar_on:
@@ -176,6 +178,7 @@ class PhysicsStage:
                 PlainField.write(field, sleeping=self.solver.check_sleep)
             self.scalar.before_step(field)
             self._scalar_synced = False
+            held = _forces_on(self.space) if n > 1 else []
         elif field is not None or self.solver.bodies or n > 1:
             assert field is None or callable(field)
             rows = self._rows
@@ -198,14 +201,20 @@ class PhysicsStage:
             if self.solver.bodies:
                 self.solver.before_step(rows.ids, rows.state, field_rows)
         for k in range(n):
-            if k > 0 and write:
+            if k > 0 and scalar:
+                for body, held_force, held_torque in held:
+                    body.force = held_force
+                    body.torque = held_torque
+            elif k > 0 and write:
                 self._write_forces()
             # Chipmunk rescales warm starts by h / (its last step) when the length changes.
             rescaled = self.config.contact_split and self.space.current_time_step != h
             self.space.step(h)
             self._space_steps += 1
             if scalar:
-                self.scalar.after_substep(self.space, stamp=self._space_steps, rescaled=rescaled)
+                self.scalar.after_substep(
+                    self.space, last=k == n - 1, stamp=self._space_steps, rescaled=rescaled
+                )
             elif self.solver.bodies:
                 ids, vel = self._rows.read_velocities(self.space)
                 self.solver.after_substep(
@@ -241,7 +250,11 @@ class PhysicsStage:
         if self.scalar_on:
             g = self.space.gravity
             self.scalar.finish(
-                dt=cfg.dt, damping=cfg.damping, space_gravity=(g.x, g.y), ledger=self.ledger
+                dt=cfg.dt,
+                damping=cfg.damping,
+                space_gravity=(g.x, g.y),
+                ledger=self.ledger,
+                substeps=cfg.substeps,
             )
             return
         self.solver.finish(
@@ -264,3 +277,17 @@ class PhysicsStage:
         # Until a body has felt anything, its up is against the gravity field at it.
         for row in np.nonzero(~np.isfinite(self.perceived.up).all(axis=1))[0]:
             self.perceived.up[row] = self._up_at(self.solver.bodies[row])
+
+
+def _forces_on(space: pymunk.Space) -> list[tuple[pymunk.Body, pymunk.Vec2d, float]]:
+    """Every dynamic body with a force or torque now (N, N·m), to write again before each later
+    substep (pymunk clears them after each): the others have none to re-apply, and writing
+    one would restart a sleeping world's idle clock, as the batch path avoids too."""
+    held = []
+    for body in space.bodies:
+        force, torque = body.force, body.torque
+        if (force.x != 0.0 or force.y != 0.0 or torque != 0.0) and (
+            body.body_type == pymunk.Body.DYNAMIC
+        ):
+            held.append((body, force, torque))
+    return held

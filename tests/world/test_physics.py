@@ -29,7 +29,7 @@ def _pile(n: int, config: WorldConfig | None = None) -> World:
     ("n", "config", "scalar"),
     [
         (3, WorldConfig(), True),
-        (3, WorldConfig(substeps=2), False),
+        (3, WorldConfig(substeps=2), True),
         (3, WorldConfig(contact_split=True), True),
         (3, WorldConfig(contact_split=True, sleep_time=1.0), True),
         (30, WorldConfig(), False),
@@ -38,11 +38,24 @@ def _pile(n: int, config: WorldConfig | None = None) -> World:
 def test_the_path_follows_the_count_and_the_scene(
     n: int, config: WorldConfig, scalar: bool
 ) -> None:
-    """Law: few tracked bodies with one substep are served in plain floats, contact split and
-    sleeping included; more than ``scalar_max_bodies`` or substeps take the batch path."""
+    """Law: few tracked bodies are served in plain floats, contact split, sleeping and substeps
+    included; more than ``scalar_max_bodies`` take the batch path."""
     world = _pile(n, config)
     world.step()
     assert world.on_scalar_path is scalar
+
+
+def test_substeps_in_a_crowded_space_take_the_batch_path() -> None:
+    """Law: with substeps every body's force is re-applied before each substep, so a space of
+    more than ``scalar_max_bodies`` bodies takes the batch path even with few tracked."""
+    world = _pile(3, WorldConfig(substeps=2))
+    world.scalar_max_bodies = 4
+    world.step()
+    assert world.on_scalar_path
+    world.add_box("crowd", mass=1.0, size=(0.5, 0.5), position=(20.0, 0.25))
+    world.add_box("crowd2", mass=1.0, size=(0.5, 0.5), position=(22.0, 0.25))
+    world.step()
+    assert not world.on_scalar_path
 
 
 class _Tilted:
