@@ -23,13 +23,14 @@ __all__ = ["cmd_faults", "configure"]
 def cmd_faults(args: argparse.Namespace) -> int:
     """Run levels clean and under each break they declare (see :mod:`playground.faults`); exit 1
     when a declared break goes uncaught, a clean run fails or a break cannot be applied."""
-    from playground import faults
+    from playground.faults.catalog import BREAKS, names
+    from playground.faults.matrix import matrix
 
-    known = faults.names()
+    known = names()
     if args.list:
         width = max(len(name) for name in known)
         for name in known:
-            print(f"{name:<{width}}  {faults.BREAKS[name].doc}")
+            print(f"{name:<{width}}  {BREAKS[name].doc}")
         return EXIT_OK
     unknown = [b for b in args.breaks or [] if b not in known]
     if unknown:
@@ -48,7 +49,7 @@ def cmd_faults(args: argparse.Namespace) -> int:
     total = sum(1 + len(args.breaks or level.catches) for _, level in levels)
     bar = _progress(total, "faults") if sys.stderr.isatty() and not args.no_progress else None
     start = time.perf_counter()
-    rows = faults.matrix(
+    rows = matrix(
         levels, args.breaks, progress=None if bar is None else lambda label: bar.update(1)
     )
     if bar is not None:

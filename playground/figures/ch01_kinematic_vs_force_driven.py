@@ -28,7 +28,7 @@ def platform_run(acceleration: float = 1.0, feed_forward: bool = True) -> Array:
     The kinematic character's velocity is its input (zero): nothing the world does can move it.
     """
     if not feed_forward:
-        from playground.faults import apply
+        from playground.faults.catalog import apply
 
         with apply("ground_acceleration_ignored"):
             return _platform_run(acceleration)

@@ -78,7 +78,7 @@ def _check_catches(level: Level) -> Iterator[Problem]:
     """Every declared break exists, once; and there are checks to catch it."""
     if not level.catches:
         return
-    from playground.faults import names as break_names
+    from playground.faults.catalog import names as break_names
 
     valid = break_names()
     seen: set[str] = set()

@@ -1,0 +1,278 @@
+"""The breaks: each one breaks one feature of the playground — the controller's force laws and
+readings, gravity rules, perception, movers — and registers itself in the catalogue by name.
+
+>>> from playground.faults.catalog import BREAKS
+>>> BREAKS["balance_off"].doc
+'No balance torque: the capsule no longer keeps itself upright.'
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from playground import movers as movers_mod
+from playground import perception as perception_mod
+from playground.controller.controller import Controller
+from playground.faults.catalog import register
+from playground.faults.patching import (
+    after,
+    controller_config,
+    parameter,
+    replaced,
+    rotate,
+    with_argument,
+)
+from playground.forces.ledger import Category
+from playground.gravity import GravityRule
+from playground.world import force_api, gravity_stage
+from playground.world import world as world_mod
+
+HOVER_REACTION_SCALE = 0.05
+"""What is left of the hover's reaction on the ground under ``hover_reaction`` (5 %)."""
+DRIVE_SLOWDOWN = 2.0
+"""``drive_slowed`` multiplies the drive's time constant by this (half as fast)."""
+TRACTION_FREE_HOVER = math.inf
+"""``traction_unbounded`` tells the drive the hover pushes with this much (no traction bound)."""
+GRIP_READING_SCALE = 0.5
+"""``grip_reading`` scales the controller's grip reading by this."""
+HOVER_READING_SCALE = 0.5
+"""``hover_reading`` scales the controller's hover reading by this."""
+GRIP_FORCE = 700.0
+"""``grip_weakened`` sets the grip budget to this, N: above a 70 kg player's weight (686.7 N),
+below what a climb at 1 m/s² needs (756.7 N)."""
+NULLIFY_LEFT = 0.03
+"""``nullify_leaks`` leaves this fraction of gravity on a nullified body."""
+PERCEIVED_ROTATION = math.radians(30.0)
+"""``perceived_gravity_rotated`` turns the perceived gravity and up by this, rad (CCW)."""
+BYPASS_CUTOFF = 1e9
+"""``filter_bypassed`` sets the 1€ minimum cutoff to this, Hz: the filter passes every sample."""
+
+
+@register("hover_reaction")
+def _hover_reaction() -> Iterator[None]:
+    """The hover's reaction on the ground is cut to 5 % (Newton's third law broken): a plank,
+    a crate or a raft no longer feels the player standing on it."""
+    keep = HOVER_REACTION_SCALE
+
+    def then(a: dict[str, Any], force: float) -> float:
+        hit = a["hit"]
+        nx, ny = hit.normal
+        back = (1.0 - keep) * force
+        a["world"].apply_force(
+            hit.body, (back * nx, back * ny), point=hit.point, category=Category.SUPPORT
+        )
+        return force
+
+    with after(Controller, "_hover", ("world", "hit"), then):
+        yield
+
+
+@register("hover_removed")
+def _hover_removed() -> Iterator[None]:
+    """No hover spring at all: the capsule stands on its own end cap, and with no hover force
+    the drive has no traction."""
+    with replaced(Controller, "_hover", lambda _: lambda *a, **k: 0.0):
+        yield
+
+
+@register("hover_reading")
+def _hover_reading() -> Iterator[None]:
+    """The controller's own hover reading is halved (the force it applies is unchanged)."""
+
+    def then(a: dict[str, Any], result: None) -> None:
+        me = a["self"]
+        hx, hy = me.last_forces.hover
+        k = HOVER_READING_SCALE
+        me.last_forces = dataclasses.replace(me.last_forces, hover=(k * hx, k * hy))
+
+    with after(Controller, "_control", ("self",), then):
+        yield
+
+
+@register("drive_world_frame")
+def _drive_world_frame() -> Iterator[None]:
+    """The drive works relative to the world instead of the ground under the feet: standing still
+    means standing still in the world, so a platform slides away under the player."""
+
+    def still(hit: Any) -> Any:
+        motion = {
+            f.name: (0.0, 0.0)
+            for f in dataclasses.fields(hit)
+            if f.name.endswith(("velocity", "acceleration"))
+        }
+        return dataclasses.replace(hit, **motion)
+
+    with with_argument(Controller, "_drive", "hit", still):
+        yield
+
+
+@register("drive_slowed")
+def _drive_slowed() -> Iterator[None]:
+    """The drive closes the gap to its goal velocity half as fast (its time constant doubled)."""
+    with controller_config(drive_time=lambda t: t * DRIVE_SLOWDOWN):
+        yield
+
+
+@register("ground_acceleration_ignored")
+def _ground_acceleration_ignored() -> Iterator[None]:
+    """The drive and the hover no longer feed the ground's own acceleration forward: on an
+    accelerating platform the player lags behind it by its acceleration × the drive's time
+    constant."""
+    with replaced(Controller, "_ground_acceleration", lambda _: lambda *a, **k: (0.0, 0.0)):
+        yield
+
+
+@register("traction_unbounded")
+def _traction_unbounded() -> Iterator[None]:
+    """The drive is no longer bounded by traction × hover force (only by its budget): a body
+    with no weight on its feet still pushes itself along the ground."""
+    with with_argument(Controller, "_drive", "hover", lambda _: TRACTION_FREE_HOVER):
+        yield
+
+
+@register("balance_off")
+def _balance_off() -> Iterator[None]:
+    """No balance torque: the capsule no longer keeps itself upright."""
+    with replaced(Controller, "_balance", lambda _: lambda *a, **k: 0.0):
+        yield
+
+
+@register("grip_reading")
+def _grip_reading() -> Iterator[None]:
+    """The controller's own grip reading is halved (the joint itself is unchanged)."""
+
+    def make(original: property) -> property:
+        assert original.fget is not None
+        get = original.fget
+        return property(lambda self: GRIP_READING_SCALE * get(self))
+
+    with replaced(Controller, "grip", make):
+        yield
+
+
+@register("grip_weakened")
+def _grip_weakened() -> Iterator[None]:
+    """The grip joint's force budget drops to 700 N: it holds a 70 kg player's weight but not
+    the extra a climbing flyer asks of it."""
+    with controller_config(grip_force=lambda _: GRIP_FORCE):
+        yield
+
+
+@register("push_reaction_off")
+def _push_reaction_off() -> Iterator[None]:
+    """The push's reaction on the pusher is not applied (the pushed body still gets its push,
+    and the controller still reports it)."""
+
+    def then(a: dict[str, Any], force: tuple[float, float]) -> tuple[float, float]:
+        me = a["self"]
+        a["world"].apply_force(me.body, (-force[0], -force[1]), category=Category.SUPPORT)
+        return force
+
+    with after(Controller, "_push", ("self", "world"), then):
+        yield
+
+
+@register("nullify_leaks")
+def _nullify_leaks() -> Iterator[None]:
+    """Nullifying a body's gravity leaves 3 % of it on."""
+
+    def leak(rule: GravityRule | None) -> GravityRule | None:
+        if rule is not None and rule.scale == 0.0:
+            return GravityRule(scale=NULLIFY_LEFT, direction=rule.direction)
+        return rule
+
+    with with_argument(world_mod.World, "set_gravity_rule", "rule", leak):
+        yield
+
+
+@register("own_gravity_ignored")
+def _own_gravity_ignored() -> Iterator[None]:
+    """The controller ignores its own-gravity switch (the intent's ``gravity``)."""
+    with with_argument(
+        Controller,
+        "_gravity_actions",
+        "it",
+        lambda it: dataclasses.replace(it, gravity=None),
+    ):
+        yield
+
+
+@register("perceived_gravity_rotated")
+def _perceived_gravity_rotated() -> Iterator[None]:
+    """The inner ear is turned by 30°: perceived gravity and perceived up, as the world reports
+    them to controllers and checks, are rotated counter-clockwise."""
+
+    def turned(original: Callable[..., tuple[float, float]]) -> Callable[..., tuple[float, float]]:
+        return lambda self, name: rotate(original(self, name), PERCEIVED_ROTATION)
+
+    with (
+        replaced(force_api.ForceAPI, "perceived_gravity", turned),
+        replaced(force_api.ForceAPI, "perceived_up", turned),
+    ):
+        yield
+
+
+@register("filter_bypassed")
+def _filter_bypassed() -> Iterator[None]:
+    """Perceived gravity is not filtered: no median-of-3 stage and a 1€ cutoff so high that every
+    raw sample (every bounce's spike) passes straight through."""
+    with with_argument(
+        perception_mod.PerceivedGravity,
+        "__init__",
+        "config",
+        lambda c: dataclasses.replace(c, min_cutoff=BYPASS_CUTOFF, spike_filter=False),
+    ):
+        yield
+
+
+@register("mover_velocity_late")
+def _mover_velocity_late() -> Iterator[None]:
+    """Movers set the velocity of the step before: each kinematic body trails its path by one
+    step (it starts a step late and never catches up)."""
+
+    def make(original: Callable[..., None]) -> Callable[..., None]:
+        parameter(original, movers_mod.Mover, "t")
+        parameter(original, movers_mod.Mover, "dt")
+
+        def drive(self: Any, t: float, dt: float) -> None:
+            original(self, t=t - dt, dt=dt)
+
+        return drive
+
+    with replaced(movers_mod.Mover, "drive", make):
+        yield
+
+
+@register("gravity_rule_ignored")
+def _gravity_rule_ignored() -> Iterator[None]:
+    """The gravity stage ignores per-body rules (nullified, scaled or own gravity): every body
+    falls in the field, while the world still reports each body's rule (so its controller
+    believes it)."""
+
+    def make(original: Callable[..., Any]) -> Callable[..., Any]:
+        def without_rules(self: Any, *args: Any) -> Any:
+            rules, self._rules = self._rules, {}
+            try:
+                return original(self, *args)
+            finally:
+                self._rules = rules
+
+        return without_rules
+
+    # apply: the corrections in a uniform field; forces_at: a field that varies in space, which
+    # the physics stage evaluates after the gravity stage.
+    with (
+        replaced(gravity_stage.GravityStage, "apply", make),
+        replaced(gravity_stage.GravityStage, "forces_at", make),
+    ):
+        yield
+
+
+@register("ring_spin_stopped")
+def _ring_spin_stopped() -> Iterator[None]:
+    """Spinning movers stand still: a ``spin`` path keeps its starting angle."""
+    with replaced(movers_mod.Spin, "pose", lambda _: lambda self, t: (self.position, self.angle)):
+        yield
