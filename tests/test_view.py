@@ -1,6 +1,5 @@
-"""Laws of the desktop view on small hand-built scenes: the camera transform, the fixed-step
-accumulator, pictures drawn off screen, replays that reproduce the keyboard exactly, and a view that
-never changes the physics."""
+"""Laws of the desktop view on small hand-built scenes: the camera transform, pictures drawn off
+screen, replays that reproduce the keyboard exactly, and a view that never changes the physics."""
 
 from __future__ import annotations
 
@@ -17,7 +16,7 @@ from hypothesis import strategies as st
 
 from playground import Category, Stage, World
 from playground.intents import Intent, IntentSource
-from playground.view import Accumulator, App, Camera, Replay, Session, Show
+from playground.view import App, Camera, Replay, Session, Show
 from playground.view.arrows import arrow_length, weight_pixels
 from playground.view.draw import COLOURS
 from playground.view.launcher import init_headless, play
@@ -130,17 +129,6 @@ def test_camera_roll_puts_up_on_top() -> None:
         cam.roll_toward(up, 0.016)
         sx, sy = cam.vector(up)
         assert abs(sx) <= TOL_ROUNDTRIP_M * cam.zoom and sy < 0.0
-
-
-@settings(max_examples=100, deadline=None)
-@given(st.lists(st.floats(0.0, 0.05), min_size=1, max_size=200))
-def test_accumulator_steps_follow_time_not_frames(frames: list[float]) -> None:
-    """Law: the physics steps run depend on the total wall time, not on how it is cut into frames
-    (within the one step still in the accumulator)."""
-    dt = 1.0 / 120.0
-    acc = Accumulator(dt, max_steps=10_000)
-    steps = sum(acc.advance(f) for f in frames)
-    assert abs(steps - sum(frames) / dt) <= 1.0
 
 
 def test_arrow_scale_is_per_weight_and_follows_the_zoom() -> None:

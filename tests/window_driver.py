@@ -81,7 +81,7 @@ def main(out: Path) -> int:
     x, y = (round(c) for c in app.camera.to_screen(start))
     xdo("mousemove", "--window", wid, str(x), str(y))
     xdo("mousedown", "1")
-    until("the press", lambda: app._press is not None)
+    until("the press", lambda: app.pointer.press is not None)
     lift = round(app.camera.pixels(2.5))
     for k in range(1, 6):
         xdo("mousemove", "--window", wid, str(x), str(y - k * lift // 5))

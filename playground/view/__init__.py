@@ -1,9 +1,13 @@
 """The desktop view (pygame-ce): the only part of playground that imports pygame.
 
 ``playground play [LEVEL]`` opens it (``--headless`` draws off screen; see
-:mod:`playground.view.launcher`). The camera, drawing, HUD and app loop each have their own module:
-``camera``, ``draw``, ``hud``, ``app``. Replays are core (:mod:`playground.replay`): re-exported
-here for the view's users.
+:mod:`playground.view.launcher`). Each part has its own module: the app and its frame loop
+(``app``), the picture of one frame (``frame``), the clock (``clock``), the keyboard
+(``keyboard``), a level's run (``session``), the mouse (``pointer``; its spring is core,
+:mod:`playground.mouse`), the camera,
+drawing, overlays, HUD, scope and tuning panel (``camera``, ``draw``, ``overlay``, ``hud``,
+``scope``, ``tuning``). Replays are core (:mod:`playground.replay`): re-exported here for the
+view's users.
 """
 
 import os
@@ -12,8 +16,11 @@ import os
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
 from playground.replay import Recorder, Replay, ReplayError
-from playground.view.app import CONTROLS, Accumulator, App, Keyboard, Session, Show
+from playground.view.app import App
 from playground.view.camera import Camera
+from playground.view.clock import Accumulator
+from playground.view.keyboard import CONTROLS, Keyboard
+from playground.view.session import Session, Show
 
 __all__ = [
     "CONTROLS",

@@ -12,8 +12,9 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from playground.level.files import SEED_SEQUENCES
-from playground.view.app import HEADLESS_FRAME, App
+from playground.view.app import App
 from playground.view.capture import GifWriter
+from playground.view.clock import HEADLESS_FRAME
 from playground.view.launcher import init_headless, show_level
 
 __all__ = ["FPS", "SEQUENCES", "SIZE", "make_gif", "make_gifs"]

@@ -1,4 +1,4 @@
-"""Launching the view: a level by name into a :class:`~playground.view.app.Show`, the
+"""Launching the view: a level by name into a :class:`~playground.view.session.Show`, the
 ``playground play`` command (window or headless), and replays played back without drawing.
 
 Headless means ``SDL_VIDEODRIVER=dummy`` and only ``pygame.display`` and ``pygame.font``
@@ -14,12 +14,15 @@ from typing import Any
 import pygame
 
 from playground.replay import Replay, ReplayError
-from playground.view.app import HEADLESS_FRAME, App, Session, Show, display_available
+from playground.view.app import App
 from playground.view.capture import GIF_FPS, GifWriter, gif_path, parse_size, picture_path
+from playground.view.clock import HEADLESS_FRAME
+from playground.view.session import Session, Show
 
 __all__ = [
     "DEFAULT_LEVEL",
     "attach_replay",
+    "display_available",
     "init_headless",
     "level_names",
     "play",
@@ -38,6 +41,15 @@ def init_headless() -> None:
     os.environ["SDL_VIDEODRIVER"] = "dummy"
     pygame.display.init()
     pygame.font.init()
+
+
+def display_available() -> bool:
+    """Whether a real display can be opened (an X11/Wayland session, or not Linux)."""
+    driver = os.environ.get("SDL_VIDEODRIVER", "")
+    if driver in ("dummy", "offscreen"):
+        return False
+    session = bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+    return session or not sys.platform.startswith("linux")
 
 
 def level_names() -> list[str]:

@@ -24,9 +24,11 @@ import numpy as np
 import pygame
 from numpy.typing import NDArray
 
+from playground.view.arrows import G0
 from playground.view.draw import COLOURS
+from playground.world.world import World
 
-__all__ = ["Scope", "draw_scope", "scope_top"]
+__all__ = ["Scope", "draw_scope", "scope_on", "scope_top"]
 
 SCALE_QUANTILE = 0.97  # the top follows this quantile of the window: 3 % of it may clip
 HEADROOM = 1.25  # … times this
@@ -56,6 +58,22 @@ class Scope:
         self._raw = np.zeros(self.capacity)
         self._filtered = np.zeros(self.capacity)
         self._count = 0
+        self._read_at = -1  # the world's step last read (-1: none)
+
+    def read(self, world: World) -> None:
+        """Push the body's |support| raw and its perceived weight m·|g_perceived| (N) from
+        ``world``, once per physics step (a second read in the same step adds nothing)."""
+        p = self.name or None
+        if p is None or world.steps == self._read_at:
+            return
+        try:
+            reading = world.forces(p)
+            pg = world.perceived_gravity(p)
+        except KeyError:
+            return
+        m = world.body(p).mass
+        self.push(math.hypot(*reading.support), m * math.hypot(*pg))
+        self._read_at = world.steps
 
     def push(self, raw: float, filtered: float) -> None:
         """Add one step's |support| raw and filtered, N."""
@@ -80,6 +98,17 @@ class Scope:
     @property
     def filtered(self) -> NDArray[np.float64]:
         return self._ordered(self._filtered)
+
+
+def scope_on(world: World, name: str | None, seconds: float, dt: float) -> Scope:
+    """A scope of ``seconds`` at step ``dt`` on the body ``name`` with its weight m·g as the
+    reference line (N; g₀ where it feels no gravity), or on nobody if ``name`` is not in
+    ``world``."""
+    if name is None or name not in world.names:
+        return Scope(seconds=seconds, dt=dt)
+    g = math.hypot(*world.gravity_at(name))
+    weight = world.body(name).mass * (g if g > 0.0 else G0)
+    return Scope(seconds=seconds, dt=dt, name=name, weight=weight)
 
 
 def scope_top(values: NDArray[np.float64], weight: float) -> float:

@@ -25,6 +25,7 @@ import pygame
 from playground.controller.spring import hover_limit
 from playground.vec import Vec
 from playground.view.draw import COLOURS
+from playground.world.world import World
 
 __all__ = ["SAFE_FRACTION", "SLIDERS", "Knobs", "Slider", "TuningPanel"]
 
@@ -62,6 +63,34 @@ class Knobs:
         if self.hover_damping is None:
             return math.inf
         return hover_limit(self.hover_damping) / (2.0 * math.pi * self.dt)
+
+    @classmethod
+    def of(cls, world: World, ctrl: Any) -> Knobs:
+        """The values as ``world`` and the player's controller ``ctrl`` (None: no player) have
+        them now."""
+        cfg = world.config
+        hover = getattr(ctrl, "config", None)
+        return cls(
+            hover_frequency=getattr(hover, "hover_frequency", None),
+            hover_damping=getattr(hover, "hover_damping", None),
+            min_cutoff=cfg.perception.min_cutoff,
+            beta=cfg.perception.beta,
+            dt=cfg.dt,
+            substeps=cfg.substeps,
+        )
+
+    def apply(self, world: World, ctrl: Any) -> None:
+        """Put these values into ``world`` and ``ctrl`` between two steps (they act from the next
+        step on): dt and substeps into the world's config, the 1€ parameters into perceived
+        gravity, the hover into the player's controller. Only what differs is set."""
+        cfg = world.config
+        if (self.dt, self.substeps) != (cfg.dt, cfg.substeps):
+            world.config = dataclasses.replace(cfg, dt=self.dt, substeps=self.substeps)
+        p = cfg.perception
+        if (self.min_cutoff, self.beta) != (p.min_cutoff, p.beta):
+            world.set_perception(dataclasses.replace(p, min_cutoff=self.min_cutoff, beta=self.beta))
+        if self.hover_frequency is not None and self.hover_damping is not None:
+            ctrl.tune_hover(self.hover_frequency, self.hover_damping)
 
     def stable(self) -> Knobs:
         """These knobs with the hover frequency lowered below its limit if it was past it."""

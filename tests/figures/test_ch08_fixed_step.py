@@ -15,7 +15,7 @@ apex falls, is below a millimetre from 60 Hz up; measured 0.3 mm at 60 Hz, 1.0 m
 def test_chapter_8_counts_steps_as_the_view_does() -> None:
     """Chapter 8: the steps per frame drawn in the figure are the view's Accumulator's (a 144 Hz
     display, a 60 Hz one with a hitch below the view's cap on steps per frame)."""
-    from playground.view.app import Accumulator
+    from playground.view.clock import Accumulator
 
     hitch = [1.0 / 60.0] * 10
     hitch[5] = ch8.CH8_HITCH
