@@ -4,10 +4,10 @@
 :mod:`playground.view.launcher`). Each part has its own module: the app and its frame loop
 (``app``), the picture of one frame (``frame``), the clock (``clock``), the keyboard
 (``keyboard``), a level's run (``session``), the mouse (``pointer``; its spring is core,
-:mod:`playground.mouse`), the camera,
-drawing, overlays, HUD, scope and tuning panel (``camera``, ``draw``, ``overlay``, ``hud``,
-``scope``, ``tuning``). Replays are core (:mod:`playground.replay`): re-exported here for the
-view's users.
+:mod:`playground.mouse`), the camera (``camera``), drawing (``draw``, ``arrows``), the overlays
+(``overlay``), their painter (``painter``) and one body's arrows (``force_arrows``), the HUD, scope
+and tuning panel (``hud``, ``scope``, ``tuning``). Replays are core (:mod:`playground.replay`):
+re-exported here for the view's users.
 """
 
 import os

@@ -27,7 +27,8 @@ from playground.view.capture import save_picture
 from playground.view.clock import HEADLESS_FRAME, SPEEDS, Accumulator
 from playground.view.frame import draw_frame
 from playground.view.hud import Hud, StageCosts
-from playground.view.overlay import OVERLAY_KEYS, Overlay, Painter
+from playground.view.overlay import OVERLAY_KEYS, Overlay
+from playground.view.painter import Painter
 from playground.view.pointer import Pointer
 from playground.view.scope import scope_on
 from playground.view.session import Session, Show

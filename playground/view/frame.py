@@ -13,6 +13,7 @@ import pygame
 from playground.view.draw import COLOURS, draw_grid
 from playground.view.hud import HudInfo
 from playground.view.keyboard import CONTROLS
+from playground.view.overlay import draw_panel
 from playground.view.pointer import draw_mouse, focus_notes
 from playground.view.session import roles_of
 
@@ -93,7 +94,7 @@ def _panels(app: App, surf: pygame.Surface) -> None:
     if app.compact:
         panel = pygame.Rect(right, 8, 0, 0)
     else:
-        panel = app.painter.draw_panel(surf, app.small, (right, 8))
+        panel = draw_panel(surf, app.small, app.overlay, (right, 8))
     font = app.tiny if app.compact else app.small
     legend = app.painter.draw_legend(surf, font, (right, panel.bottom + 4))
     app.hud.rects += [panel, legend]
