@@ -20,6 +20,12 @@ from pathlib import Path
 from playground._preflight import UsageError, needs, writable
 from playground.bench import guide, overhead, performance, report
 from playground.bench.accuracy import Result, plan, sweep
+from playground.bench.accuracy_figure import accuracy_figure
+from playground.bench.accuracy_tables import accuracy_markdown
+from playground.bench.export import to_csv, to_json
+from playground.bench.guide_report import guide_markdown
+from playground.bench.measurement import Measurement
+from playground.bench.performance_page import performance_doc, summary_markdown
 
 __all__ = ["configure", "main", "run"]
 
@@ -115,9 +121,9 @@ def run(args: argparse.Namespace) -> int:
         runs = guide.guide(progress=progress)
         hover = guide.hover_table()
         if args.json:
-            print(report.to_json(runs))
+            print(to_json(runs))
         else:
-            print(guide.guide_markdown(runs, hover, time.perf_counter() - t0))
+            print(guide_markdown(runs, hover, time.perf_counter() - t0))
         return 0
     if args.bench == "docs":
         t0 = time.perf_counter()
@@ -142,10 +148,10 @@ def run(args: argparse.Namespace) -> int:
     if args.bench == "accuracy":
         rows = _accuracy(args)
         if args.csv is not None:
-            args.csv.write_text(report.to_csv(rows), encoding="utf-8")
+            args.csv.write_text(to_csv(rows), encoding="utf-8")
         if args.figure is not None:
-            report.accuracy_figure(rows, args.figure)
-        print(report.to_json(rows) if args.json else report.accuracy_markdown(rows))
+            accuracy_figure(rows, args.figure)
+        print(to_json(rows) if args.json else accuracy_markdown(rows))
         return 0
     if args.bench == "performance":
         if args.source is not None:
@@ -156,25 +162,25 @@ def run(args: argparse.Namespace) -> int:
                 raise UsageError(f"--from: {exc}") from None
         else:
             m = _measure(args.quick, progress, "playground bench performance")
-        args.out.write_text(performance.performance_doc(m), encoding="utf-8")
+        args.out.write_text(performance_doc(m), encoding="utf-8")
         print(f"wrote {args.out}", file=sys.stderr)
         return 0
     command = "playground bench overhead" + (" --quick" if args.quick else "") + " --json"
     m = _measure(args.quick, progress, command)
     rows_o = overhead.profile(quick=args.quick, progress=progress)
     if args.csv is not None:
-        args.csv.write_text(report.to_csv(rows_o), encoding="utf-8")
+        args.csv.write_text(to_csv(rows_o), encoding="utf-8")
     if args.figure is not None:
         overhead.overhead_figure(rows_o, args.figure)
     if args.json:
-        data = {**m.to_dict(), "effects": json.loads(report.to_json(rows_o))}
+        data = {**m.to_dict(), "effects": json.loads(to_json(rows_o))}
         print(json.dumps(data, indent=1, ensure_ascii=False))
     else:
-        print(performance.summary_markdown(m) + "\n" + overhead.overhead_markdown(rows_o))
+        print(summary_markdown(m) + "\n" + overhead.overhead_markdown(rows_o))
     return 0
 
 
-def _measure(quick: bool, progress: bool, command: str) -> performance.Measurement:
+def _measure(quick: bool, progress: bool, command: str) -> Measurement:
     """The levels, the piles and the goals (``quick``: one level, two piles, 2 blocks)."""
     if quick:
         return performance.measure(

@@ -23,7 +23,9 @@ from typing import Any
 import pymunk
 
 from playground.bench.blocks import interleave
+from playground.bench.markdown import table
 from playground.bench.pile import floor_length, pile_space, pile_world
+from playground.bench.plots import log_axes, pyplot, save
 from playground.controller.controller import Controller
 from playground.gravity import GravityRule, Radial, RotatingRoom, Turn
 from playground.limits import MAX_TIME
@@ -269,12 +271,6 @@ def fixed_cost(repeats: int = 9, steps: int = 2000) -> tuple[float, float]:
     return 1e6 * t.a_median, 1e6 * t.b_median
 
 
-def _table(header: Sequence[str], body: Sequence[Sequence[str]]) -> str:
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(row) + " |" for row in body]
-    return "\n".join(lines)
-
-
 def overhead_markdown(rows: Sequence[OverheadRow]) -> str:
     """Three tables: µs per step (× bare), marginal µs per effect, stages at the largest size."""
     sizes = sorted({r.bodies for r in rows})
@@ -304,11 +300,11 @@ def overhead_markdown(rows: Sequence[OverheadRow]) -> str:
     header = ["effect", *(f"{n} bodies" for n in sizes)]
     return (
         "### µs per step (× bare pymunk: median of paired blocks, and fastest / fastest)\n\n"
-        + _table(header, [bare, *total])
+        + table(header, [bare, *total])
         + "\n\n### Marginal µs per step of each effect (against no effect)\n\n"
-        + _table(header, marginal)
+        + table(header, marginal)
         + f"\n\n### Mean µs per step of each stage at {big} bodies\n\n"
-        + _table(["effect", *stage_names], stages)
+        + table(["effect", *stage_names], stages)
         + "\n"
     )
 
@@ -318,11 +314,7 @@ def overhead_figure(rows: Sequence[OverheadRow], path: Path) -> None:
 
     Needs matplotlib (``pip install 'pymunk-playground[bench]'``).
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     sizes = sorted({r.bodies for r in rows})
     effects = list(dict.fromkeys(r.effect for r in rows))
     at = {(r.bodies, r.effect): r for r in rows}
@@ -332,19 +324,10 @@ def overhead_figure(rows: Sequence[OverheadRow], path: Path) -> None:
             continue
         ys = [max(at[n, e].marginal_us, 0.1) for n in sizes]
         a.plot(sizes, ys, "-o", ms=3, label=e)
-    a.set(
-        xscale="log",
-        yscale="log",
-        xlabel="bodies",
-        ylabel="marginal µs per step",
-        title="Cost of each effect",
-    )
+    log_axes(a, "bodies", "marginal µs per step", "Cost of each effect")
     a.legend(fontsize=7)
     b.plot(sizes, [at[n, "none"].ratio for n in sizes], "-o", label="no effect / bare pymunk")
     b.axhline(NO_EFFECT_BUDGET, color="red", ls="--", lw=0.8, label=f"{NO_EFFECT_BUDGET}× budget")
     b.set(xscale="log", xlabel="bodies", ylabel="× bare pymunk", title="World with no effect")
     b.legend(fontsize=8)
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, path)

@@ -40,7 +40,12 @@ TOP_FUNCTIONS = 15
 
 @dataclass(frozen=True, slots=True)
 class StageCost:
-    """One stage over a run: calls, total seconds, mean µs per call, share of all stages."""
+    """One stage over a run.
+
+    Attributes:
+        stage: its name.  calls: the steps it ran in.  total_s: its time over the run, s.
+        mean_us: per call, µs.  share: of the time of all stages (0 … 1).
+    """
 
     stage: str
     calls: int

@@ -1,0 +1,219 @@
+"""The goals of the performance issue and their verdicts: :data:`GOALS` in the order of its table,
+and :func:`judge`, which takes each goal's worst case over the rows it covers and, where a goal is
+missed, says by how much and why, quoting the measured facts (the stages the time goes to, the
+engine's share, the levels on the vectorised path, the per-body cost on the pile).
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from playground.bench.measurement import GoalResult, LevelRow, PileRow
+
+__all__ = ["GOALS", "Goal", "judge"]
+
+
+@dataclass(frozen=True, slots=True)
+class Goal:
+    """A goal of the performance issue: ``measured(levels, piles) <op> target``.
+
+    Attributes:
+        key: short identifier.  measure: what is measured.  text: the goal as written.
+        target: the bound.  at_most: the measured value must be ≤ target (else ≥).
+        unit: of the value.  why: why it is missed when it is (what the time is spent on).
+    """
+
+    key: str
+    measure: str
+    text: str
+    target: float
+    at_most: bool
+    unit: str
+    why: str
+
+
+GOALS = (
+    Goal(
+        "one_player_us",
+        "one-player level step",
+        "≤ 25 µs",
+        25.0,
+        True,
+        "µs",
+        "Python cost per step, not physics: {stages}. The controller is most of it (its step in "
+        "plain floats is not done yet). {vector} keep the vectorised solver (the scalar path "
+        "splits no contacts and writes no per-body field), whose physics, forces and filter "
+        "stages are a few dozen numpy calls (about 1 µs each) and batch calls (about 5 µs).",
+    ),
+    Goal(
+        "one_player_rt",
+        "one-player level, real-time factor",
+        "≥ 300× at dt = 1/120 s",
+        300.0,
+        False,
+        "×",
+        "The same fixed cost per step as the row above.",
+    ),
+    Goal(
+        "every_level_rt",
+        "every shipped level, real-time factor",
+        "≥ 200×",
+        200.0,
+        False,
+        "×",
+        "The same fixed cost per step: the engine's own step is {engine} of the level's (see "
+        "the levels table).",
+    ),
+    Goal(
+        "controller_us",
+        "controller, per actor per step",
+        "≤ 10 µs",
+        10.0,
+        True,
+        "µs",
+        "The controller senses with shape queries, reads its body's state attribute by "
+        "attribute through cffi (about 0.3–1 µs each) and writes its forces and their reactions "
+        "through the ledger; `playground run LEVEL --profile` lists its functions.",
+    ),
+    Goal(
+        "pile_10",
+        "pile, solver + 1€ on every body, N = 10 (overhead / bare)",
+        "≤ 3×",
+        3.0,
+        True,
+        "×",
+        "Ten tracked bodies are on the scalar path: {per_body} µs of Python per body per step "
+        "(attribute reads through cffi before and after the step, reverse integration, "
+        "median-of-3 and 1€ in floats), against {bare_per_body} µs per box for the bare step.",
+    ),
+    Goal(
+        "pile_large",
+        "same, N = 1000 and 3000 (overhead / bare)",
+        "≤ 0.10×",
+        0.10,
+        True,
+        "×",
+        "The two batch reads per step iterate every body in Chipmunk, and the 1€ filter and the "
+        "perceived-gravity magnitude and direction are a dozen numpy passes over the rows.",
+    ),
+    Goal(
+        "field_1000",
+        "per-body gravity field, N = 1000 (× uniform)",
+        "≤ 1.05×",
+        1.05,
+        True,
+        "×",
+        "A per-body field reads every position (one batch read), evaluates the field and writes "
+        "every force (one batch write): two passes over all bodies that uniform gravity does in "
+        "Chipmunk's own loop.",
+    ),
+    Goal(
+        "no_effect",
+        "scene with no effect (× bare)",
+        "≤ 1.05×",
+        1.05,
+        True,
+        "×",
+        "`World.step`'s own Python around the bare `space.step` (the plan check, the step count "
+        "and time, the guard's countdown) is about 1 µs: a seventh of a bare step of ten boxes, "
+        "lost in the noise at 1000.",
+    ),
+)
+"""The goals of the performance issue, in the order of its table."""
+
+
+def _range(values: Sequence[float], fmt: str) -> str:
+    lo, hi = min(values), max(values)
+    return (
+        fmt.format(lo)
+        if math.isclose(lo, hi, rel_tol=0.005)
+        else f"{fmt.format(lo)}–{fmt.format(hi)}"
+    )
+
+
+def _where(levels: Sequence[LevelRow]) -> str:
+    """The median µs of each stage over ``levels``, largest first, with the engine's."""
+    names = sorted({s for r in levels for s in r.stages})
+    med = {s: statistics.median(r.stages.get(s, 0.0) for r in levels) for s in names}
+    parts = [f"{s} {v:.0f} µs" for s, v in sorted(med.items(), key=lambda kv: -kv[1]) if v >= 1]
+    engine = statistics.median(r.engine_us for r in levels) if levels else math.nan
+    return "median stages " + ", ".join(parts) + f"; the engine's step {engine:.1f} µs"
+
+
+def _facts(
+    one: Sequence[LevelRow], levels: Sequence[LevelRow], solver: dict[int, PileRow]
+) -> dict[str, str]:
+    """The measured facts the goals' explanations quote."""
+    vector = [r.level for r in levels if not r.scalar and r.players]
+    small = solver.get(10)
+    return {
+        "stages": _where(one),
+        "engine": _engine_share(levels),
+        "vector": ("Levels " + ", ".join(vector)) if vector else "No level",
+        "per_body": f"{(small.us - small.base_us) / 10:.1f}" if small else "?",
+        "bare_per_body": f"{small.base_us / 10:.1f}" if small else "?",
+    }
+
+
+def _engine_share(levels: Sequence[LevelRow]) -> str:
+    """The range of engine / level step over ``levels``, as percentages."""
+    shares = [100.0 / r.ratio for r in levels]
+    return f"{_range(shares, '{:.0f}')} %" if shares else "n/a"
+
+
+def judge(levels: Sequence[LevelRow], piles: Sequence[PileRow]) -> tuple[GoalResult, ...]:
+    """Each of :data:`GOALS` against the rows (a goal whose rows were not measured is left out)."""
+    one = [r for r in levels if r.players == 1]
+    actors = [r for r in levels if r.players >= 1 and "control" in r.stages]
+    solver = {r.bodies: r for r in piles if r.kind == "solver+1€"}
+    fields = [r for r in piles if r.kind == "field"]
+    none = [r for r in piles if r.kind == "no effect"]
+    found: dict[str, tuple[float, str]] = {}
+    if one:
+        us = [r.level_us for r in one]
+        rt = [r.realtime for r in one]
+        found["one_player_us"] = (max(us), f"{_range(us, '{:.0f}')} µs over {len(one)} levels")
+        found["one_player_rt"] = (min(rt), f"{_range(rt, '{:.0f}')}×")
+    if levels:
+        rt = [r.realtime for r in levels]
+        found["every_level_rt"] = (min(rt), f"{_range(rt, '{:.0f}')}× over {len(levels)} levels")
+    if actors:
+        per = [r.stages["control"] / r.players for r in actors]
+        found["controller_us"] = (max(per), f"{_range(per, '{:.1f}')} µs")
+    if 10 in solver:
+        r = solver[10]
+        found["pile_10"] = (
+            r.overhead,
+            f"{r.overhead:.1f}× (blocks {r.ratio_lo - 1:.1f}–{r.ratio_hi - 1:.1f}×)",
+        )
+    big = [solver[n] for n in sorted(solver) if n >= 1000]
+    if big:
+        found["pile_large"] = (
+            max(r.overhead for r in big),
+            ", ".join(f"{r.overhead:.2f}× (N = {r.bodies})" for r in big),
+        )
+    if fields:
+        r = max(fields, key=lambda x: x.bodies)
+        found["field_1000"] = (
+            r.ratio,
+            f"{r.ratio:.2f}× (N = {r.bodies}, blocks {r.ratio_lo:.2f}–{r.ratio_hi:.2f})",
+        )
+    if none:
+        rs = [r.ratio for r in none]
+        found["no_effect"] = (
+            max(rs),
+            ", ".join(f"{r.ratio:.2f}× (N = {r.bodies})" for r in none),
+        )
+    out = []
+    for g in GOALS:
+        if g.key not in found:
+            continue
+        value, detail = found[g.key]
+        met = value <= g.target if g.at_most else value >= g.target
+        off = value / g.target if g.at_most else g.target / value
+        why = "" if met else g.why.format(**_facts(one, levels, solver))
+        out.append(GoalResult(g.key, g.measure, g.text, value, detail, met, off, why))
+    return tuple(out)
