@@ -43,10 +43,10 @@ GOALS = (
         25.0,
         True,
         "µs",
-        "Python cost per step, not physics: {stages}. The controller is most of it (its step in "
-        "plain floats is not done yet). {vector} keep the vectorised solver (the scalar path "
-        "splits no contacts and writes no per-body field), whose physics, forces and filter "
-        "stages are a few dozen numpy calls (about 1 µs each) and batch calls (about 5 µs).",
+        "Python cost per step, not physics: {stages}. {vector}. The controller is most of "
+        "what is left: its probe (a shape query, then the ground body's state read through "
+        "cffi) and its force laws, each force written through the checked ledger; "
+        "`playground run LEVEL --profile` lists its functions.",
     ),
     Goal(
         "one_player_rt",
@@ -152,7 +152,11 @@ def _facts(
     return {
         "stages": _where(one),
         "engine": _engine_share(levels),
-        "vector": ("Levels " + ", ".join(vector)) if vector else "No level",
+        "vector": (
+            "Levels " + ", ".join(vector) + " keep the vectorised solver (numpy and batch calls)"
+            if vector
+            else "Every one-player level is on the scalar path (plain floats, no numpy)"
+        ),
         "per_body": f"{(small.us - small.base_us) / 10:.1f}" if small else "?",
         "bare_per_body": f"{small.base_us / 10:.1f}" if small else "?",
     }

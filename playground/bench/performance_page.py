@@ -85,7 +85,7 @@ def crossover_markdown(piles: Sequence[PileRow]) -> str:
     return (
         "## Two paths: where the scalar one stops paying\n\n"
         "With few tracked bodies the solver and the filter run in plain floats, reading each "
-        "body's attributes (`playground/scalar.py`); with many, on numpy arrays filled by "
+        "body's attributes (`playground/scalar/`); with many, on numpy arrays filled by "
         "`pymunk.batch`. "
         "Both give the same readings (tests/test_solver_oracle.py compares them step by step on "
         "random scenes). Measured here on the pile with every box tracked and perceived, scalar "
