@@ -16,10 +16,12 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
+from playground._validate import bounded_vec
 from playground.controller._vec import ZERO, scaled, unit_or
 from playground.controller.spring import hover_spring
 from playground.controller.states import State
 from playground.forces.ledger import Category
+from playground.limits import MAX_IMPULSE
 from playground.vec import Vec
 from playground.world.world import World
 
@@ -80,6 +82,9 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
         self.last_forces = NO_FORCES
         return
 
+    # The forces on our own body, in the order they act, written once at the end (see
+    # World.apply_forces); reactions on other bodies are applied where they arise.
+    own: list[tuple[float, float, Category]] = []
     jumped = False
     grounded = state in (State.GROUNDED, State.GETTING_UP, State.CRUSHED)
     may_jump = state is State.GROUNDED or (
@@ -88,20 +93,32 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
     if may_jump and t - self._jump_pressed_at <= cfg.jump_buffer:
         # The take-off step still carries the weight (hover and drive act once more), so the
         # body leaves at exactly jump_speed relative to the ground.
-        jumped = self._jump(world, hit if hit is not None else self._last_ground, ux, uy)
-        if jumped:
+        take_off = self._jump(world, hit if hit is not None else self._last_ground, ux, uy)
+        if take_off is not None:
+            jumped = True
+            own.append((take_off[0], take_off[1], Category.SUPPORT))
             self.state = State.AIRBORNE
 
     if grounded and hit is not None and hit.walkable:
         hover_f = self._hover(world, hit, gx, gy, t)
         hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
+        if hover_f > 0.0:
+            own.append((hover[0], hover[1], Category.SUPPORT))
         if state is not State.CRUSHED:
             drive = self._drive(world, hit, it.move, gx, gy, hover_f, dt)
+            if drive is not ZERO:
+                own.append((drive[0], drive[1], Category.SUPPORT))
     elif state is State.AIRBORNE and it.move != 0.0 and not jumped:
         drive = self._steer(world, it.move, ux, uy, dt)
+        if drive is not ZERO:
+            own.append((drive[0], drive[1], Category.APPLIED))
 
     if it.push:
         push = self._push(world, hit)
+        if push is not ZERO:
+            own.append((push[0], push[1], Category.SUPPORT))
+    if own:
+        world.apply_forces(self.body, own)
     if not cfg.lock_rotation:
         torque = self._balance(world, hit if grounded else None, ux, uy, dt)
 
@@ -149,9 +166,7 @@ def hover(self: Controller, world: World, hit: GroundHit, gx: float, gy: float, 
     spring = hover_spring(k, c, m, target - height, v_n, wc.dt, wc.substeps)
     f = min(cfg.hover_force, max(0.0, weight + spring))
     if f > 0.0:
-        fx, fy = f * nx, f * ny
-        world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
-        react(world, hit.body, fx, fy, hit.point)
+        react(world, hit.body, f * nx, f * ny, hit.point)
     return f
 
 
@@ -192,7 +207,6 @@ def drive(
     if f == 0.0:
         return ZERO
     fx, fy = f * tx, f * ty
-    world.apply_force(self.body, (fx, fy), category=Category.SUPPORT)
     react(world, hit.body, fx, fy, hit.point)
     return (fx, fy)
 
@@ -206,7 +220,6 @@ def steer(self: Controller, world: World, move: float, ux: float, uy: float, dt:
     if f * move <= 0.0:
         return ZERO
     f = max(-cfg.air_force, min(cfg.air_force, f))
-    world.apply_force(self.body, (f * tx, f * ty), category=Category.APPLIED)
     return (f * tx, f * ty)
 
 
@@ -238,9 +251,12 @@ def balance(
     return torque
 
 
-def jump(self: Controller, world: World, ground: GroundHit | None, ux: float, uy: float) -> bool:
-    """Take off at ``jump_speed`` along up relative to the ground: an impulse on us and its
-    reaction on a dynamic ground. False if already rising that fast."""
+def jump(
+    self: Controller, world: World, ground: GroundHit | None, ux: float, uy: float
+) -> Vec | None:
+    """Take off at ``jump_speed`` along up relative to the ground: apply the reaction on a
+    dynamic ground and return the impulse on us as the force that gives it over the step, N;
+    None if already rising that fast."""
     cfg = self.config
     vx, vy = self._vx, self._vy
     gvx, gvy = ground.frame_velocity if ground is not None else ZERO
@@ -248,15 +264,16 @@ def jump(self: Controller, world: World, ground: GroundHit | None, ux: float, uy
     self._jump_pressed_at = -math.inf
     self._grounded_at = -math.inf
     if dv <= 0.0:
-        return False
+        return None
     m = self._m
     jx, jy = m * dv * ux, m * dv * uy
-    world.apply_impulse(self.body, (jx, jy), category=Category.SUPPORT)
+    bounded_vec("impulse", (jx, jy), MAX_IMPULSE, "N·s")
     if ground is not None and ground.body.body_type == pymunk.Body.DYNAMIC:
         # The reaction, as _react's: a static or kinematic ground takes no impulse.
         world.apply_impulse(ground.body, (-jx, -jy), point=ground.point, category=Category.SUPPORT)
     self._rising = True
-    return True
+    dt = world.config.dt
+    return (jx / dt, jy / dt)
 
 
 def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
@@ -288,7 +305,6 @@ def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
     nx, ny = unit_or(cx - origin[0], cy - origin[1], (ax, ay))
     f = cfg.push_force
     world.apply_force(best.shape.body, (f * nx, f * ny), point=(cx, cy), category=Category.SUPPORT)
-    world.apply_force(self.body, (-f * nx, -f * ny), category=Category.SUPPORT)
     self.pushed = ((cx, cy), (f * nx, f * ny))
     return (-f * nx, -f * ny)
 

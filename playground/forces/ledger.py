@@ -98,6 +98,24 @@ class ForceLedger:
         entry.parts[i] += fx
         entry.parts[i + 1] += fy
 
+    def add_all(self, body: pymunk.Body, forces: list[tuple[float, float, Category]]) -> None:
+        """Record several forces (N, world frame, at the centre of gravity) on one body, in order:
+        the same float additions, in the same order, as one :meth:`add` call each, without the
+        per-call cost (a controller's forces on its own body, written once a step). The caller
+        has checked that each is finite."""
+        entry = self._entry(body)
+        fx = entry.fx
+        fy = entry.fy
+        parts = entry.parts
+        for x, y, category in forces:
+            fx += x
+            fy += y
+            i = 2 * category.value
+            parts[i] += x
+            parts[i + 1] += y
+        entry.fx = fx
+        entry.fy = fy
+
     def add_torque(self, body: pymunk.Body, torque: float, category: Category) -> None:
         """Record a pure torque (N·m)."""
         if not math.isfinite(torque):

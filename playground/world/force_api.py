@@ -83,6 +83,19 @@ class ForceAPI(BodyRegistry):
             # The ledger's first entry replans the step (its on_first).
             self.ledger.add(b, force, point=point, category=category)
 
+    def apply_forces(self, body: pymunk.Body, forces: list[tuple[float, float, Category]]) -> None:
+        """Apply several forces ``(fx, fy, category)`` (N, world frame, at the centre of gravity)
+        to one body of this world during the coming step: one call and one check of each, for a
+        controller's own forces; the totals are those of one :meth:`apply_force` call each, in
+        order, bit for bit."""
+        limit = RUNAWAY_FORCE if self._config.guard else math.inf
+        for fx, fy, _ in forces:
+            # Within ±limit, NaN refused by the comparisons themselves.
+            if not (-limit <= fx <= limit and -limit <= fy <= limit):
+                bounded_vec("force", (fx, fy), limit, "N")
+        if body.body_type == pymunk.Body.DYNAMIC:
+            self.ledger.add_all(self._own(body), forces)
+
     def apply_torque(
         self, body: pymunk.Body | str, torque: float, *, category: Category = Category.APPLIED
     ) -> None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import random
 
 import pymunk
 import pytest
@@ -90,3 +91,28 @@ def test_non_finite_forces_and_torques_are_refused(bad: float) -> None:
     with pytest.raises(ValueError, match="torque: expected a finite number in N·m"):
         ledger.add_torque(body, bad, Category.APPLIED)
     assert len(ledger) == 0
+
+
+def test_add_all_is_one_add_each_in_order_bit_for_bit() -> None:
+    """Law: recording forces with one ``add_all`` gives the body's totals and per-category sums
+    of one ``add`` call each, in the same order, to the last bit (a body that already has an
+    entry included)."""
+    rng = random.Random(7)
+    cats = list(Category)
+    for _ in range(200):
+        forces = [
+            (rng.uniform(-1e3, 1e3), rng.uniform(-1e3, 1e3), rng.choice(cats))
+            for _ in range(rng.randint(1, 5))
+        ]
+        first = (rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0))
+        one, many = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
+        a, b = ForceLedger(), ForceLedger()
+        a.add(one, first)
+        b.add(many, first)
+        for fx, fy, cat in forces:
+            a.add(one, (fx, fy), category=cat)
+        b.add_all(many, forces)
+        a.flush()
+        b.flush()
+        assert (one.force.x, one.force.y) == (many.force.x, many.force.y)
+        assert a.items()[0][1] == b.items()[0][1]
