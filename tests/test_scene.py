@@ -29,14 +29,6 @@ a = [-10.0, 0.0]
 b = [10.0, 0.0]
 """
 
-CRATE = """
-[[props]]
-name = "crate"
-position = [0.0, 0.5]
-mass = 10.0
-shapes = [{kind = "box", size = [1.0, 1.0]}]
-"""
-
 TOL_REL = 1e-9
 """At rest at ride height the hover's spring term is exactly 0 and its feed-forward is the
 weight: the reading differs from m·g only by float rounding."""

@@ -103,7 +103,7 @@ def top_functions(run: Callable[[], object], count: int = TOP_FUNCTIONS) -> list
 
 
 def _short(file: str) -> str:
-    """A source path from its package folder on (``playground/world.py``, ``pymunk/space.py``)."""
+    """A source path from its package folder on (``playground/vec.py``, ``pymunk/space.py``)."""
     parts = Path(file).parts
     for i in range(len(parts) - 1, -1, -1):
         if parts[i] in ("playground", "pymunk", "numpy"):
