@@ -23,6 +23,7 @@ from collections.abc import Callable, Mapping
 
 import pymunk
 
+from playground import _raw
 from playground.filters.one_euro import OneEuroFilter
 from playground.forces.ledger import ForceLedger
 from playground.forces.readings import BodyForces
@@ -110,15 +111,17 @@ class ScalarPath:
         self._field = field is not None
         self._summed = 0
         split = self.contact_split
+        velocity, angular_velocity = _raw.velocity, _raw.angular_velocity
+        force, torque = _raw.force, _raw.torque
         for r in self.rows:
-            b = r.body
-            r.v0x, r.v0y = b.velocity
-            r.v0w = b.angular_velocity
-            r.fx, r.fy = b.force
-            r.ft = b.torque
+            h = r.h
+            r.v0x, r.v0y = velocity(h)
+            r.v0w = angular_velocity(h)
+            r.fx, r.fy = force(h)
+            r.ft = torque(h)
             r.seen = True
             if field is not None:
-                r.ffx, r.ffy = field.get(b, (0.0, 0.0))
+                r.ffx, r.ffy = field.get(r.body, (0.0, 0.0))
             if split:
                 r.jx = r.jy = r.jnx = r.jny = 0.0
                 r.unknown = False
@@ -131,10 +134,11 @@ class ScalarPath:
         impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
         check_sleep = self.check_sleep
         first_sum = self._summed == 0
+        velocity, angular_velocity = _raw.velocity, _raw.angular_velocity
         for r in self.rows:
             b = r.body
-            r.vx, r.vy = b.velocity
-            r.vw = b.angular_velocity
+            r.vx, r.vy = velocity(r.h)
+            r.vw = angular_velocity(r.h)
             if not last:
                 if first_sum:
                     r.qx, r.qy, r.qw = r.vx, r.vy, r.vw

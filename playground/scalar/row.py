@@ -12,6 +12,8 @@ import math
 
 import pymunk
 
+from playground import _raw
+
 __all__ = ["Row"]
 
 _NAN = math.nan
@@ -41,6 +43,7 @@ class Row:
         "fy",
         "gx",
         "gy",
+        "h",
         "i_dt",
         "inv_m",
         "jnx",
@@ -85,6 +88,8 @@ class Row:
 
     def __init__(self, body: pymunk.Body) -> None:
         self.body = body
+        self.h = _raw.handle(body)
+        """The body's ``cpBody*``: its state is read through :mod:`playground._raw`."""
         self.m = self.moment = self.inv_m = self.m_dt = self.i_dt = 0.0
         self.locked = False
         # inputs: v₀, ω₀, v, ω after the last substep, forces integrated, the field's part
