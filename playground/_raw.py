@@ -24,6 +24,7 @@ True
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import pymunk
@@ -33,8 +34,12 @@ __all__ = [
     "Handle",
     "angular_velocity",
     "body_id",
+    "body_type",
+    "centre_of_gravity",
     "force",
     "handle",
+    "mass",
+    "moment",
     "position",
     "rotation",
     "set_force",
@@ -53,12 +58,20 @@ _get_force = lib.cpBodyGetForce
 _set_force = lib.cpBodySetForce
 _set_torque = lib.cpBodySetTorque
 _get_user_data = lib.cpBodyGetUserData
+_get_cog = lib.cpBodyGetCenterOfGravity
+_local_to_world = lib.cpBodyLocalToWorld
 _cast = ffi.cast
 
-angular_velocity = lib.cpBodyGetAngularVelocity
+angular_velocity: Callable[[Handle], float] = lib.cpBodyGetAngularVelocity
 """``angular_velocity(h)``: the body's angular velocity, rad/s."""
-torque = lib.cpBodyGetTorque
+torque: Callable[[Handle], float] = lib.cpBodyGetTorque
 """``torque(h)``: the torque set on the body for the coming step, N·m."""
+mass: Callable[[Handle], float] = lib.cpBodyGetMass
+"""``mass(h)``: the body's mass, kg."""
+moment: Callable[[Handle], float] = lib.cpBodyGetMoment
+"""``moment(h)``: the body's moment of inertia, kg·m²."""
+body_type: Callable[[Handle], int] = lib.cpBodyGetType
+"""``body_type(h)``: ``pymunk.Body.DYNAMIC``, ``KINEMATIC`` or ``STATIC`` (ints)."""
 
 
 def handle(body: pymunk.Body) -> Handle:
@@ -78,7 +91,7 @@ def velocity(h: Handle) -> tuple[float, float]:
 
 
 def position(h: Handle) -> tuple[float, float]:
-    """The body's position (its centre of gravity's, in world coordinates), m."""
+    """The body's position (the origin of its own frame, in world coordinates), m."""
     p = _get_position(h)
     return p.x, p.y
 
@@ -87,6 +100,13 @@ def rotation(h: Handle) -> tuple[float, float]:
     """(cos, sin) of the body's angle: ``body.rotation_vector``."""
     r = _get_rotation(h)
     return r.x, r.y
+
+
+def centre_of_gravity(h: Handle) -> tuple[float, float]:
+    """The body's centre of gravity in world coordinates, m:
+    ``body.local_to_world(body.center_of_gravity)`` (the same C calls, no Vec2d between them)."""
+    c = _local_to_world(h, _get_cog(h))
+    return c.x, c.y
 
 
 def force(h: Handle) -> tuple[float, float]:

@@ -81,3 +81,24 @@ def test_a_write_wakes_a_sleeping_body_as_the_property_does() -> None:
     assert body.is_sleeping
     _raw.set_force(_raw.handle(body), 0.0, 1.0)
     assert not body.is_sleeping
+
+
+@given(_FINITE, _FINITE, _FINITE, _FINITE, st.floats(0.01, 1e3), st.floats(0.01, 1e3))
+def test_mass_moment_and_centre_equal_the_properties_bit_for_bit(
+    x: float, y: float, cx: float, angle: float, m: float, i: float
+) -> None:
+    body = pymunk.Body(m, i)
+    body.center_of_gravity = (cx * 1e-3, -cx * 2e-3)
+    body.position = (x, y)
+    body.angle = angle
+    h = _raw.handle(body)
+    assert _bits((_raw.mass(h), _raw.moment(h))) == _bits((body.mass, body.moment))
+    assert _bits(_raw.centre_of_gravity(h)) == _bits(
+        tuple(body.local_to_world(body.center_of_gravity))
+    )
+
+
+def test_body_type_is_the_property() -> None:
+    kinds = (pymunk.Body.DYNAMIC, pymunk.Body.KINEMATIC, pymunk.Body.STATIC)
+    bodies = [pymunk.Body(1.0, 1.0, body_type=kind) for kind in kinds]
+    assert [_raw.body_type(_raw.handle(b)) for b in bodies] == list(kinds)

@@ -17,6 +17,7 @@ from collections.abc import Callable
 
 import pymunk
 
+from playground import _raw
 from playground._validate import finite
 from playground.controller import grab, laws, sensing, states, switches
 from playground.controller._vec import unit_or
@@ -104,6 +105,8 @@ class Controller:
         shape.filter = pymunk.ShapeFilter(group=group)
         self._filter = pymunk.ShapeFilter(group=group)
         self.body = body
+        # The body's cpBody*: the step reads its state through the C getters (playground._raw).
+        self._h = _raw.handle(body)
         self.shape = shape
         world.add(name, body, shape)
         world.track(name)

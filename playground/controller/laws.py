@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
+from playground import _raw
 from playground._validate import bounded_vec
 from playground.controller._vec import ZERO, scaled, unit_or
 from playground.controller.spring import hover_spring
@@ -230,14 +231,16 @@ def balance(
     reaction on a dynamic ground) and return it, N·m. Counts how long the budget falls short."""
     cfg = self.config
     body = self.body
-    r = body.rotation_vector
-    ax, ay = -r.y, r.x
+    h = self._h
+    cos_a, sin_a = _raw.rotation(h)
+    ax, ay = -sin_a, cos_a
     err = math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
     wb = self._wb
     # Damp the spin relative to the ground's, so the body turns with a turning floor (inside
     # a spinning ring) instead of lagging behind it.
-    spin = body.angular_velocity - (hit.body.angular_velocity if hit is not None else 0.0)
-    need = body.moment * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
+    ground = _raw.handle(hit.body) if hit is not None else None
+    spin = _raw.angular_velocity(h) - (_raw.angular_velocity(ground) if ground is not None else 0.0)
+    need = _raw.moment(h) * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
     budget = cfg.balance_torque
     torque = max(-budget, min(budget, need))
     touching = hit is not None or self.contact_load > 0.0 or self._touching()
@@ -246,7 +249,7 @@ def balance(
     else:
         self._saturated = 0.0
     world.apply_torque(body, torque, category=Category.APPLIED)
-    if hit is not None and hit.body.body_type == pymunk.Body.DYNAMIC:
+    if hit is not None and _raw.body_type(ground) == pymunk.Body.DYNAMIC:
         world.apply_torque(hit.body, -torque, category=Category.SUPPORT)
     return torque
 
@@ -315,5 +318,5 @@ def react(world: World, ground: pymunk.Body, fx: float, fy: float, point: Vec) -
     forces on static and kinematic bodies, so for those the call would only repeat the check of
     a force of the magnitude ours has just passed (and of a hit point within the probe's reach).
     """
-    if ground.body_type == pymunk.Body.DYNAMIC:
+    if _raw.body_type(_raw.handle(ground)) == pymunk.Body.DYNAMIC:
         world.apply_force(ground, (-fx, -fy), point=point, category=Category.SUPPORT)

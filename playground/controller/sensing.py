@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
+from playground import _raw
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.states import State
 from playground.vec import Vec
@@ -76,12 +77,10 @@ def sense(self: Controller, world: World) -> Vec:
     Up is the perceived one while supported and the field while airborne (it sees where it will
     land), fallen or getting up (contacts while lying and rising shake the inner ear).
     """
-    body = self.body
-    p = body.position
-    self._px, self._py = p.x, p.y
-    v = body.velocity
-    self._vx, self._vy = v.x, v.y
-    self._m = float(body.mass)
+    h = self._h
+    self._px, self._py = _raw.position(h)
+    self._vx, self._vy = _raw.velocity(h)
+    self._m = _raw.mass(h)
     gx, gy = self._gravity(world)
 
     supported = self.state in (State.GROUNDED, State.HANGING, State.CRUSHED)
@@ -149,19 +148,20 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
     # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
     dt = world.config.dt
-    turn = ground.angular_velocity * dt
-    if turn == 0.0 and ground.body_type != pymunk.Body.KINEMATIC:
+    gh = _raw.handle(ground)
+    turn = _raw.angular_velocity(gh) * dt
+    if turn == 0.0 and _raw.body_type(gh) != pymunk.Body.KINEMATIC:
         # Not turning: the chord below is exactly 0.0 for any d (cos 0 = 1, sin 0 = ±0), and
         # only a kinematic ground's own acceleration needs d: skip reading its centre (~1 µs).
         cos_t, sin_t = 1.0, 0.0
         dx = dy = rx = ry = 0.0
     else:
         cos_t, sin_t = math.cos(turn), math.sin(turn)
-        cog = ground.local_to_world(ground.center_of_gravity)
-        dx, dy = px - cog.x, py - cog.y
+        cx, cy = _raw.centre_of_gravity(gh)
+        dx, dy = px - cx, py - cy
         rx = (cos_t * dx - sin_t * dy - dx) / dt
         ry = (sin_t * dx + cos_t * dy - dy) / dt
-    v = ground.velocity
+    vx, vy = _raw.velocity(gh)
     own_x, own_y = self._ground_acceleration(ground, dx, dy, dt)
     return GroundHit(
         body=ground,
@@ -169,7 +169,7 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
         normal=(nx, ny),
         distance=(px - hx) * ux + (py - hy) * uy,
         walkable=nx * ux + ny * uy >= self._cos_slope,
-        frame_velocity=(v.x + rx, v.y + ry),
+        frame_velocity=(vx + rx, vy + ry),
         frame_acceleration=(
             (cos_t * rx - sin_t * ry - rx) / dt + own_x,
             (sin_t * rx + cos_t * ry - ry) / dt + own_y,
@@ -188,17 +188,18 @@ def ground_acceleration(
     kinematic ground (zero otherwise, and on the first step over a new ground): a dynamic
     ground's change of velocity is partly our own reaction on it.
     """
-    if ground.body_type != pymunk.Body.KINEMATIC:
+    h = _raw.handle(ground)
+    if _raw.body_type(h) != pymunk.Body.KINEMATIC:
         self._ground_motion = None
         return ZERO
-    v = ground.velocity
-    w = ground.angular_velocity
+    vx, vy = _raw.velocity(h)
+    w = _raw.angular_velocity(h)
     prev = self._ground_motion
-    self._ground_motion = (ground, v.x, v.y, w)
+    self._ground_motion = (ground, vx, vy, w)
     if prev is None or prev[0] is not ground:
         return ZERO
     alpha = (w - prev[3]) / dt
-    return ((v.x - prev[1]) / dt - alpha * dy, (v.y - prev[2]) / dt + alpha * dx)
+    return ((vx - prev[1]) / dt - alpha * dy, (vy - prev[2]) / dt + alpha * dx)
 
 
 def contact_load(self: Controller, world: World, ux: float, uy: float) -> float:
