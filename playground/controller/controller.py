@@ -18,6 +18,7 @@ from collections.abc import Callable
 import pymunk
 
 from playground import _raw
+from playground._sweep import Sweep
 from playground._validate import finite
 from playground.controller import grab, laws, sensing, states, switches
 from playground.controller._vec import unit_or
@@ -104,6 +105,7 @@ class Controller:
         group = next(_groups)
         shape.filter = pymunk.ShapeFilter(group=group)
         self._filter = pymunk.ShapeFilter(group=group)
+        self._sweep = Sweep(world.space, self._filter)
         self.body = body
         # The body's cpBody*: the step reads its state through the C getters (playground._raw).
         self._h = _raw.handle(body)

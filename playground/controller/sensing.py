@@ -123,24 +123,13 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     cfg = self.config
     px, py = self._px, self._py
     length = cfg.probe_length
-    # Every hit, then the nearest: with a radius, pymunk 7.3.1's segment_query_first can
-    # return a farther shape (inside a 64-segment ring it reports a neighbouring chord's end
-    # cap, normal 40° off, while the chord under the probe is 7 cm nearer).
-    hits = world.space.segment_query(
-        (px, py), (px - ux * length, py - uy * length), cfg.probe_radius, self._filter
-    )
-    info: pymunk.SegmentQueryInfo | None = None
-    for h in hits:
-        shape = h.shape
-        # Strictly nearer only: of equally near hits the first wins (as min() would pick).
-        if shape is not None and not shape.sensor and (info is None or h.alpha < info.alpha):
-            info = h
-    if info is None or info.shape is None or info.shape.body is None:
+    # The nearest of every hit (playground._sweep says why not pymunk's segment_query_first).
+    found = self._sweep.nearest(px, py, px - ux * length, py - uy * length, cfg.probe_radius)
+    ground = found[0].body if found is not None else None
+    if found is None or ground is None:
         self._ground_motion = None
         return None
-    ground = info.shape.body
-    hx, hy = info.point
-    nx, ny = info.normal
+    _, hx, hy, nx, ny = found
     # The ground's frame at our centre, as pymunk's step needs it: positions move with the
     # velocity before the step, so standing still on a ground turning by θ = ω·dt this step
     # takes the velocity that carries our centre to where the ground carries that point,

@@ -1,0 +1,106 @@
+"""Plumbing under pymunk's queries: the nearest solid shape a swept circle hits, found through
+Chipmunk's segment query directly, for a controller's ground probe every step.
+
+``space.segment_query`` calls back into Python for every hit and builds a ``SegmentQueryInfo``
+and two ``Vec2d`` for each, then the caller walks the list: ~2.7 µs for a probe over one floor.
+:class:`Sweep` passes Chipmunk a callback of its own that keeps only the nearest non-sensor hit
+as plain floats (~1 µs). It visits the same hits in the same order and keeps the same one (the
+strictly nearest, the first of equally near ones), so the answer is that of
+:func:`nearest_by_pymunk`, the same walk over pymunk's public query (``tests/test_sweep.py``
+compares them bit for bit). ``segment_query_first`` is not an answer: with a radius, pymunk
+7.3.1's can return a farther shape (inside a 64-segment ring it reports a neighbouring chord's
+end cap, normal 40° off, while the chord under the probe is 7 cm nearer).
+
+Like :mod:`playground._raw` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
+major version is pinned). Where the platform refuses a cffi callback (memory both writable and
+executable), :class:`Sweep` answers through :func:`nearest_by_pymunk` instead.
+
+>>> import pymunk
+>>> space = pymunk.Space()
+>>> floor = pymunk.Segment(space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.0)
+>>> space.add(floor)
+>>> hit = Sweep(space, pymunk.ShapeFilter()).nearest(0.0, 1.0, 0.0, -1.0, 0.25)
+>>> hit is not None and hit[0] is floor and hit[1:] == (0.0, 0.0, 0.0, 1.0)
+True
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import pymunk
+from pymunk._chipmunk_cffi import ffi, lib
+
+__all__ = ["Hit", "Sweep", "nearest_by_pymunk"]
+
+Hit = tuple[pymunk.Shape, float, float, float, float]
+"""The shape hit, the hit point (m) and the surface normal there (unit)."""
+
+_query = lib.cpSpaceSegmentQuery
+_is_sensor = lib.cpShapeGetSensor
+_shape_data = lib.cpShapeGetUserData
+_from_handle = ffi.from_handle
+
+
+def _keep_nearest(shape: Any, point: Any, normal: Any, alpha: float, data: Any) -> None:
+    # best = [alpha, shape, px, py, nx, ny]: strictly nearer only, so of equally near hits the
+    # first wins (the walk in nearest_by_pymunk).
+    best = _from_handle(data)
+    if alpha < best[0] and not _is_sensor(shape):
+        best[:] = alpha, shape, point.x, point.y, normal.x, normal.y
+
+
+try:
+    _callback: Any = ffi.callback("cpSpaceSegmentQueryFunc", _keep_nearest)
+except (MemoryError, RuntimeError):  # pragma: no cover - a platform without cffi callbacks
+    _callback = None
+
+
+def nearest_by_pymunk(
+    space: pymunk.Space,
+    start: tuple[float, float],
+    end: tuple[float, float],
+    radius: float,
+    shape_filter: pymunk.ShapeFilter,
+) -> Hit | None:
+    """The nearest non-sensor shape hit by a circle of ``radius`` (m) swept from ``start`` to
+    ``end`` (m), by pymunk's public query: the reference :class:`Sweep` answers as."""
+    info: pymunk.SegmentQueryInfo | None = None
+    for h in space.segment_query(start, end, radius, shape_filter):
+        shape = h.shape
+        if shape is not None and not shape.sensor and (info is None or h.alpha < info.alpha):
+            info = h
+    if info is None or info.shape is None:
+        return None
+    return (info.shape, info.point.x, info.point.y, info.normal.x, info.normal.y)
+
+
+class Sweep:
+    """The nearest non-sensor shape a circle swept through ``space`` hits, among the shapes
+    ``shape_filter`` lets through (a probe's filter, fixed: it is converted once)."""
+
+    __slots__ = ("_best", "_data", "_filter", "_filter_c", "_space", "_space_c")
+
+    def __init__(self, space: pymunk.Space, shape_filter: pymunk.ShapeFilter) -> None:
+        self._space = space
+        self._filter = shape_filter
+        self._space_c = space._space
+        self._filter_c = ffi.new("cpShapeFilter *", shape_filter)
+        self._best: list[Any] = [math.inf, None, 0.0, 0.0, 0.0, 0.0]
+        self._data = ffi.new_handle(self._best)
+
+    def nearest(self, x0: float, y0: float, x1: float, y1: float, radius: float) -> Hit | None:
+        """The shape hit by a circle of ``radius`` (m) swept from (x0, y0) to (x1, y1) (m) that
+        is nearest the start, with the hit point and normal; None if none is."""
+        if _callback is None:
+            return nearest_by_pymunk(self._space, (x0, y0), (x1, y1), radius, self._filter)
+        best = self._best
+        best[0] = math.inf
+        best[1] = None
+        _query(self._space_c, (x0, y0), (x1, y1), radius, self._filter_c[0], _callback, self._data)
+        shape = best[1]
+        if shape is None:
+            return None
+        best[1] = None
+        return (_from_handle(_shape_data(shape)), best[2], best[3], best[4], best[5])

@@ -1,0 +1,118 @@
+"""The sweep through Chipmunk's query answers as pymunk's public query walked for the nearest
+solid hit, bit for bit: the same shape (of equally near ones, the first), point and normal."""
+
+from __future__ import annotations
+
+import math
+import random
+import struct
+
+import pymunk
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from playground import _sweep
+from playground._sweep import Sweep, nearest_by_pymunk
+
+RING_SEGMENTS = 64
+"""A ring of chords, where pymunk's segment_query_first picks a farther chord's end cap."""
+RING_RADIUS = 3.5
+"""The ring's radius, m."""
+
+
+def _bits(hit: _sweep.Hit | None) -> tuple[int, bytes] | None:
+    """The hit's shape (by identity) and its floats' IEEE 754 bytes."""
+    if hit is None:
+        return None
+    return id(hit[0]), struct.pack("4d", *hit[1:])
+
+
+def _ring(space: pymunk.Space) -> None:
+    """A ring of RING_SEGMENTS chords of radius RING_RADIUS around the origin."""
+    step = 2 * math.pi / RING_SEGMENTS
+    for i in range(RING_SEGMENTS):
+        a = (RING_RADIUS * math.cos(i * step), RING_RADIUS * math.sin(i * step))
+        b = (RING_RADIUS * math.cos((i + 1) * step), RING_RADIUS * math.sin((i + 1) * step))
+        space.add(pymunk.Segment(space.static_body, a, b, 0.1))
+
+
+def _scene(seed: int) -> tuple[pymunk.Space, pymunk.ShapeFilter]:
+    """Shapes of every kind around the origin: twins (equally near), sensors, a ring, and one
+    shape of the probing group (which the filter leaves out)."""
+    rng = random.Random(seed)
+    space = pymunk.Space()
+    static = space.static_body
+    for _ in range(6):
+        a = (rng.uniform(-3, 3), rng.uniform(-3, 3))
+        b = (rng.uniform(-3, 3), rng.uniform(-3, 3))
+        r = rng.choice((0.0, 0.05, 0.2))
+        twin = pymunk.Segment(static, a, b, r)
+        space.add(pymunk.Segment(static, a, b, r), twin)
+        twin.sensor = rng.random() < 0.3
+    for _ in range(4):
+        body = pymunk.Body(
+            1.0, 1.0, body_type=rng.choice((pymunk.Body.DYNAMIC, pymunk.Body.KINEMATIC))
+        )
+        body.position = (rng.uniform(-3, 3), rng.uniform(-3, 3))
+        body.angle = rng.uniform(-3, 3)
+        shape: pymunk.Shape = rng.choice(
+            (pymunk.Circle(body, 0.4), pymunk.Poly.create_box(body, (0.8, 0.3), 0.02))
+        )
+        shape.sensor = rng.random() < 0.2
+        space.add(body, shape)
+    _ring(space)
+    own = pymunk.Segment(static, (-1.0, 0.0), (1.0, 0.0), 0.1)
+    own.filter = pymunk.ShapeFilter(group=7)
+    space.add(own)
+    return space, pymunk.ShapeFilter(group=7)
+
+
+_COORD = st.floats(-3.2, 3.2, allow_nan=False)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.integers(0, 50), _COORD, _COORD, _COORD, _COORD, st.sampled_from((0.0, 0.05, 0.25)))
+def test_the_sweep_answers_as_pymunks_query(
+    seed: int, x0: float, y0: float, x1: float, y1: float, radius: float
+) -> None:
+    space, shape_filter = _scene(seed)
+    fast = Sweep(space, shape_filter).nearest(x0, y0, x1, y1, radius)
+    assert _bits(fast) == _bits(nearest_by_pymunk(space, (x0, y0), (x1, y1), radius, shape_filter))
+
+
+def test_of_equally_near_shapes_the_first_wins_and_sensors_are_passed() -> None:
+    space = pymunk.Space()
+    first = pymunk.Segment(space.static_body, (-1.0, 0.0), (1.0, 0.0), 0.0)
+    second = pymunk.Segment(space.static_body, (-1.0, 0.0), (1.0, 0.0), 0.0)
+    sensor = pymunk.Segment(space.static_body, (-1.0, 0.5), (1.0, 0.5), 0.0)
+    sensor.sensor = True
+    space.add(first, second, sensor)
+    ref = nearest_by_pymunk(space, (0.0, 1.0), (0.0, -1.0), 0.1, pymunk.ShapeFilter())
+    hit = Sweep(space, pymunk.ShapeFilter()).nearest(0.0, 1.0, 0.0, -1.0, 0.1)
+    assert ref is not None and hit is not None
+    assert hit[0] is ref[0] and hit[0] is not sensor
+    assert _bits(hit) == _bits(ref)
+
+
+def test_inside_a_ring_the_nearest_chord_not_pymunks_first() -> None:
+    space = pymunk.Space()
+    _ring(space)
+    radius = RING_RADIUS
+    shape_filter = pymunk.ShapeFilter()
+    th = 0.07  # a probe outward near a chord's end
+    start = ((radius - 0.9) * math.cos(th), (radius - 0.9) * math.sin(th))
+    end = ((radius + 0.5) * math.cos(th), (radius + 0.5) * math.sin(th))
+    first = space.segment_query_first(start, end, 0.25, shape_filter)
+    ref = nearest_by_pymunk(space, start, end, 0.25, shape_filter)
+    hit = Sweep(space, shape_filter).nearest(*start, *end, 0.25)
+    assert first is not None and ref is not None and first.shape is not ref[0]
+    assert _bits(hit) == _bits(ref)
+
+
+def test_without_cffi_callbacks_the_sweep_asks_pymunk(monkeypatch: pytest.MonkeyPatch) -> None:
+    space, shape_filter = _scene(3)
+    sweep = Sweep(space, shape_filter)
+    fast = sweep.nearest(0.0, 3.0, 0.0, 3.6, 0.25)
+    monkeypatch.setattr(_sweep, "_callback", None)
+    assert fast is not None and _bits(sweep.nearest(0.0, 3.0, 0.0, 3.6, 0.25)) == _bits(fast)
