@@ -27,38 +27,84 @@ class BodyRows:
     """The space's bodies as rows: ids, velocity (m/s), angular velocity (rad/s), force (N), torque.
 
     ``state`` columns: vx, vy, w, fx, fy, torque.
+
+    Rows are views of the batch buffers, valid until the next read of the same kind (the state
+    and the velocities have a buffer each): whoever keeps rows past that copies them (the solver
+    gathers them into tracked order). ``ids`` is a read-only array that stays the same object
+    while the read's ids do not change (row order changes only when bodies are added, removed,
+    sleep or wake), so a cache keyed by it is checked with ``is``.
     """
 
-    __slots__ = ("_in", "_out", "ids", "positions", "state")
+    __slots__ = (
+        "_id_bytes",
+        "_in",
+        "_out",
+        "_vel",
+        "_vel_id_bytes",
+        "_vel_ids",
+        "ids",
+        "positions",
+        "state",
+        "width",
+    )
 
     def __init__(self) -> None:
         self._in = batch.Buffer()
+        self._vel = batch.Buffer()
         self._out = batch.Buffer()
+        self._id_bytes = b""
         self.ids: NDArray[np.uintp] = np.zeros(0, dtype=np.uintp)
+        self._vel_id_bytes = b""
+        self._vel_ids = self.ids
         self.state: NDArray[np.float64] = np.zeros((0, 6))
         self.positions: NDArray[np.float64] = np.zeros((0, 2))
         """x, y (m) of each row, from the last read with ``positions``."""
+        self.width = 6
+        """Floats per row of the last :meth:`read` (8 with positions: x, y come first)."""
+
+    def _ids_of(self, buffer: batch.Buffer) -> NDArray[np.uintp]:
+        """The ids of a state read into ``buffer``: the last array again if they are the same."""
+        raw = bytes(buffer.int_buf())
+        if raw != self._id_bytes:
+            self._id_bytes = raw
+            self.ids = np.frombuffer(raw, dtype=np.uintp)
+        return self.ids
 
     def read(self, space: pymunk.Space, positions: bool = False) -> None:
-        """Read every body, with its position too if ``positions`` (copies: the batch buffer is
-        reused)."""
-        self._in.clear()
-        batch.get_space_bodies(space, _READ_ALL if positions else _READ, self._in)
-        self.ids = np.frombuffer(self._in.int_buf(), dtype=np.uintp).copy()
-        floats = np.frombuffer(self._in.float_buf(), dtype=np.float64)
+        """Read every body, with its position too if ``positions``."""
+        buffer = self._in
+        buffer.clear()
+        batch.get_space_bodies(space, _READ_ALL if positions else _READ, buffer)
+        self._ids_of(buffer)
+        floats = np.frombuffer(buffer.float_buf(), dtype=np.float64)
         if positions:
-            rows = floats.reshape(-1, 8).copy()
+            rows = floats.reshape(-1, 8)
             self.positions = rows[:, 0:2]
             self.state = rows[:, 2:8]
+            self.width = 8
         else:
-            self.state = floats.reshape(-1, 6).copy()
+            self.state = floats.reshape(-1, 6)
+            self.width = 6
+
+    @property
+    def flat(self) -> NDArray[np.float64]:
+        """The last :meth:`read` as one row of floats, :attr:`width` per body (for gathers)."""
+        return np.frombuffer(self._in.float_buf(), dtype=np.float64)
 
     def read_velocities(self, space: pymunk.Space) -> tuple[NDArray[np.uintp], NDArray[np.float64]]:
-        """Ids and (vx, vy, w) rows, read now (copies)."""
-        self._in.clear()
-        batch.get_space_bodies(space, _F.BODY_ID | _F.VELOCITY | _F.ANGULAR_VELOCITY, self._in)
-        ids = np.frombuffer(self._in.int_buf(), dtype=np.uintp).copy()
-        return ids, np.frombuffer(self._in.float_buf(), dtype=np.float64).reshape(-1, 3).copy()
+        """Ids and (vx, vy, w) rows, read now (views, valid until the next call)."""
+        buffer = self._vel
+        buffer.clear()
+        batch.get_space_bodies(space, _F.BODY_ID | _F.VELOCITY | _F.ANGULAR_VELOCITY, buffer)
+        raw = bytes(buffer.int_buf())
+        if raw == self._id_bytes:
+            ids = self.ids  # the same order as the state read (the usual case)
+        elif raw == self._vel_id_bytes:
+            ids = self._vel_ids
+        else:
+            self._vel_id_bytes = raw
+            ids = self._vel_ids = np.frombuffer(raw, dtype=np.uintp)
+        return ids, np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 3)
 
     def write_forces(self, space: pymunk.Space, forces: NDArray[np.float64]) -> None:
         """Write (fx, fy, torque) rows in the order of the last :meth:`read`.

@@ -68,6 +68,8 @@ class ForceSolver(TrackedRows):
         self._passive3 = np.zeros((n, 3))
         self._applied3 = np.zeros((n, 3))
         self._split = ContactSplit()
+        self._split_known = False  # the split ran since it was last forgotten
+        self._all_seen = False  # every row was seen in every substep (else: look at _seen)
         self._rebuild_keys()
 
     # -- membership (see TrackedRows) --------------------------------------------------------
@@ -103,20 +105,26 @@ class ForceSolver(TrackedRows):
         n = len(self.bodies)
         self._vsum = np.zeros((n, 3))
         self._seen = np.zeros(n, dtype=bool)
+        self._xy = np.zeros((0, 2), dtype=np.intp)
         self._split.reset(self._keys, self._key_row)
+        self._gather_cache: dict[
+            int, tuple[NDArray[np.intp], NDArray[np.intp], NDArray[np.intp]]
+        ] = {}
 
     # -- per step -------------------------------------------------------------------------------
 
     def before_step(
         self,
         ids: NDArray[np.uintp],
-        state: NDArray[np.float64],
+        flat: NDArray[np.float64],
+        width: int = 6,
         field: NDArray[np.float64] | None = None,
     ) -> None:
         """Take v₀, ω₀ and the forces about to be integrated from a batch read.
 
-        ``state`` columns: vx, vy, w, fx, fy, torque (see ``_batch.BodyRows``); ``field`` rows
-        (N) are the per-body gravity forces included in those forces.
+        ``flat`` holds ``width`` floats per row of ``ids``, the last six of them vx, vy, w, fx,
+        fy, torque (see ``_batch.BodyRows``); ``field`` rows (N) are the per-body gravity forces
+        included in those forces.
         """
         if self._keys_dirty:
             self._rebuild_keys()
@@ -126,14 +134,16 @@ class ForceSolver(TrackedRows):
             self._split.begin()
         order = self._order(ids)
         if order is not None:
-            # Every tracked body is present (the usual case): one gather into tracked order;
-            # v₀ and F are views of it.
-            sub = np.take(state, order, axis=0)  # take: 3× cheaper than state[order]
-            self._v0 = sub[:, 0:3]
-            self._force = sub[:, 3:6]
+            # Every tracked body is present (the usual case): v₀ and F gathered straight into
+            # tracked order as contiguous (N, 3) arrays, one flat take each.
+            at_v, at_f = self._gathers(order, width)
+            self._v0 = np.take(flat, at_v)
+            self._force = np.take(flat, at_f)
             self._field = None if field is None else np.take(field, order, axis=0)
             self._seen.fill(True)
+            self._all_seen = True
         else:
+            state = flat.reshape(-1, width)[:, width - 6 :]
             tracked, rows = self._rows(ids)
             self._v0 = np.zeros((n, 3))
             self._force = np.zeros((n, 3))
@@ -145,6 +155,7 @@ class ForceSolver(TrackedRows):
                 self._field[tracked] = field[rows]
             self._seen.fill(False)
             self._seen[tracked] = True
+            self._all_seen = False
         self._vlast = self._v0
 
     def after_substep(
@@ -164,12 +175,13 @@ class ForceSolver(TrackedRows):
         """
         order = self._order(ids)
         if order is not None:
-            sub = np.take(vel, order, axis=0)
+            sub = np.take(vel.reshape(-1), self._gathers(order, 3)[0])
         else:
             tracked, rows = self._rows(ids)
             present = np.zeros(len(self.bodies), dtype=bool)
             present[tracked] = True
             self._seen &= present
+            self._all_seen = False
             sub = self._vlast.copy()
             sub[tracked] = vel[rows]
         if not last:
@@ -186,8 +198,24 @@ class ForceSolver(TrackedRows):
             # integrated for the whole step, and its reading would be off by the gravity it
             # missed).
             self._seen &= np.array([not b.is_sleeping for b in self.bodies], dtype=bool)
+            self._all_seen = False
         if self.contact_split:
             self._split.accumulate(space, stamp, rescaled)
+
+    def _gathers(
+        self, order: NDArray[np.intp], width: int
+    ) -> tuple[NDArray[np.intp], NDArray[np.intp]]:
+        """Flat indices, (N, 3) each, of (vx, vy, w) and of the three columns after them for
+        rows ``order`` of a read of ``width`` floats per row: a state read (``width`` 6, or 8
+        with x, y first: vx … torque are its last six) or a velocities read (``width`` 3: the
+        second array is then unused). Cached while the order stays the same."""
+        cached = self._gather_cache.get(width)
+        if cached is None or cached[0] is not order:
+            first = width - 6 if width >= 6 else 0
+            at_v = order[:, None] * width + np.arange(first, first + 3)
+            cached = (order, at_v, at_v + 3)
+            self._gather_cache[width] = cached
+        return cached[1], cached[2]
 
     def finish(
         self,
@@ -210,7 +238,7 @@ class ForceSolver(TrackedRows):
         dv = self._vlast - self._v0
         if d != 1.0:
             dv += (1.0 - d) * (self._v0 + self._vsum if self._substeps_summed else self._v0)
-        force = self._force.copy()  # contiguous from here on
+        force = self._force  # this step's own gather: "applied" from here on
         weights = self._weights3(space_gravity)
         # E = m·Δv/dt − F − m·g, columns [x, y, angle]
         engine = dv
@@ -237,11 +265,13 @@ class ForceSolver(TrackedRows):
                 support[i, 1] += p[5]
                 applied[i, 0] -= p[0] + p[4]
                 applied[i, 1] -= p[1] + p[5]
-        # (N, 2) and contiguous: the filter downstream is its only consumer.
-        specific = np.multiply(support[:, 0:2], self._inv_m2)
+        # (N, 2) and contiguous: the filter downstream is its only consumer. Gathered, then
+        # multiplied: half the cost of multiplying the (N, 2) slice of the (N, 3) rows.
+        specific = np.take(support.reshape(-1), self._xy_index())
+        specific *= self._inv_m2
 
         ok = self._seen
-        if not ok.all():
+        if not (self._all_seen or ok.all()):
             # Rows without a reading keep their last values.
             stale = ~ok
             for new, old in (
@@ -257,8 +287,18 @@ class ForceSolver(TrackedRows):
         self.valid = ok.copy()
         if self.contact_split:
             self._split.finish(ok, self.engine, dt)
-        elif self._split.valid.any():  # the split was just turned off
-            self._split.forget()
+            self._split_known = True
+        elif self._split_known:  # the split was just turned off
+            if self._split.valid.any():
+                self._split.forget()
+            self._split_known = False
+
+    def _xy_index(self) -> NDArray[np.intp]:
+        """Flat indices (N, 2) of the x, y columns of (N, 3) rows, cached while N stays."""
+        n = len(self.bodies)
+        if self._xy.shape[0] != n:
+            self._xy = np.arange(n)[:, None] * 3 + np.arange(2)
+        return self._xy
 
     def _m3_over(self, dt: float) -> NDArray[np.float64]:
         """[m, m, I] / dt, cached while dt and the masses stay the same."""
@@ -271,6 +311,12 @@ class ForceSolver(TrackedRows):
         if self._weight is None or self._weight[0] != g:
             self._weight = (g, self.mass[:, None] * np.array([g[0], g[1], 0.0]))
         return self._weight[1]
+
+    def engine_within(self, bound: float) -> bool:
+        """Whether every engine force and torque component is finite and within ±``bound``: a
+        quick pass over the contiguous readings (NaN fails it) before a closer look."""
+        engine = self._engine3
+        return engine.size == 0 or bool(-bound <= engine.min() and engine.max() <= bound)
 
     # -- readings, one row per tracked body ------------------------------------------------------
 

@@ -97,7 +97,8 @@ class TrackedRows:
         answer while ``ids`` is unchanged.
         """
         cache = self._rows_cache
-        if cache is not None and np.array_equal(cache[0], ids):
+        # A batch read hands the same ids array again while its ids are unchanged.
+        if cache is not None and (cache[0] is ids or np.array_equal(cache[0], ids)):
             return cache[1], cache[2]
         hit = lookup(self._keys, ids)
         rows = np.nonzero(hit >= 0)[0]

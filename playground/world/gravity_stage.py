@@ -212,7 +212,7 @@ class GravityStage:
         time of the last :meth:`apply`: their rows in the read, and one (fx, fy) row each."""
         t = self._t
         cache = self._field_rows
-        if cache is None or not np.array_equal(cache[0], ids):
+        if cache is None or not (cache[0] is ids or np.array_equal(cache[0], ids)):
             # Row order only changes when bodies are added, removed, sleep or wake.
             reg = lookup(self._reg_ids, ids)
             rows = np.nonzero(reg >= 0)[0]

@@ -151,6 +151,8 @@ class PhysicsStage:
             row, col = bad
             value = self.scalar.engine(row)[col]
             return self.solver.bodies[row].id, FORCE_COLUMNS[col], value, RUNAWAY_FORCE
+        if self.solver.engine_within(RUNAWAY_FORCE):
+            return None
         bad = first_bad(self.solver.engine, FORCE_BOUNDS)
         if bad is None:
             return None
@@ -194,12 +196,14 @@ class PhysicsStage:
                     # The solver tells the field's part of the force from the rest.
                     field_rows = np.zeros((len(rows.ids), 2))
                     field_rows[at] = force
-            # pymunk cleared every force after its last step: write them back only if one is set.
-            write = bool(rows.state[:, 3:6].any())
-            if field is not None and write:
-                self._write_forces()
+            if field is not None or n > 1:
+                # pymunk cleared every force after its last step: write them back only if one
+                # is set.
+                write = bool(rows.state[:, 3:6].any())
+                if field is not None and write:
+                    self._write_forces()
             if self.solver.bodies:
-                self.solver.before_step(rows.ids, rows.state, field_rows)
+                self.solver.before_step(rows.ids, rows.flat, rows.width, field_rows)
         for k in range(n):
             if k > 0 and scalar:
                 for body, held_force, held_torque in held:

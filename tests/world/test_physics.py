@@ -174,3 +174,20 @@ def test_substeps_write_the_forces_again_only_when_a_body_has_one(
     world.apply_force("b0", (1.0, 0.0))
     world.step()
     assert counts == {"read": 2, "write": 2}
+
+
+def test_a_runaway_on_the_batch_path_looks_at_forces_not_torques() -> None:
+    """Law: on the batch path a quick pass over every reading (torques included) lets a sound
+    step through, and a closer look decides otherwise: a torque beyond the force bound is no
+    runaway, an engine force beyond it is, named by its body and column."""
+    world = _pile(30)
+    world.scalar_max_bodies = 0
+    world.run(0.1)
+    physics = world._physics
+    assert not physics.scalar_on and physics.runaway() is None
+    physics.solver.engine_torque[4] = 1e300
+    assert physics.runaway() is None
+    physics.solver.engine[7, 0] = -1e300
+    body_id, column, value, _ = physics.runaway() or (0, ("", "", ""), 0.0, 0.0)
+    assert body_id == world.body("b7").id and column == ("engine force", "x", "N")
+    assert value == -1e300
