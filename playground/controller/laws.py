@@ -83,8 +83,8 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
         self.last_forces = NO_FORCES
         return
 
-    # The forces on our own body, in the order they act, written once at the end (see
-    # World.apply_forces); reactions on other bodies are applied where they arise.
+    # The forces on our own body, in the order they act, and the balance torque, written once at
+    # the end (see World.apply_forces); reactions on other bodies are applied where they arise.
     own: list[tuple[float, float, Category]] = []
     jumped = False
     grounded = state in (State.GROUNDED, State.GETTING_UP, State.CRUSHED)
@@ -118,10 +118,11 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
         push = self._push(world, hit)
         if push is not ZERO:
             own.append((push[0], push[1], Category.SUPPORT))
-    if own:
-        world.apply_forces(self.body, own)
+    balance: float | None = None
     if not cfg.lock_rotation:
-        torque = self._balance(world, hit if grounded else None, ux, uy, dt)
+        torque = balance = self._balance(world, hit if grounded else None, ux, uy, dt)
+    if own or balance is not None:
+        world.apply_forces(self.body, own, balance)
 
     grip = ZERO
     if self.joint is not None:
@@ -227,10 +228,10 @@ def steer(self: Controller, world: World, move: float, ux: float, uy: float, dt:
 def balance(
     self: Controller, world: World, hit: GroundHit | None, ux: float, uy: float, dt: float
 ) -> float:
-    """The upright PD torque toward up, within ``balance_torque``; apply it (and its
-    reaction on a dynamic ground) and return it, N·m. Counts how long the budget falls short."""
+    """The upright PD torque toward up, within ``balance_torque``: apply its reaction on a
+    dynamic ground and return it, N·m (:func:`act` writes it with our forces). Counts how long
+    the budget falls short."""
     cfg = self.config
-    body = self.body
     h = self._h
     cos_a, sin_a = _raw.rotation(h)
     ax, ay = -sin_a, cos_a
@@ -248,7 +249,6 @@ def balance(
         self._saturated += dt
     else:
         self._saturated = 0.0
-    world.apply_torque(body, torque, category=Category.APPLIED)
     if hit is not None and _raw.body_type(ground) == pymunk.Body.DYNAMIC:
         world.apply_torque(hit.body, -torque, category=Category.SUPPORT)
     return torque

@@ -98,11 +98,17 @@ class ForceLedger:
         entry.parts[i] += fx
         entry.parts[i + 1] += fy
 
-    def add_all(self, body: pymunk.Body, forces: list[tuple[float, float, Category]]) -> None:
-        """Record several forces (N, world frame, at the centre of gravity) on one body, in order:
-        the same float additions, in the same order, as one :meth:`add` call each, without the
-        per-call cost (a controller's forces on its own body, written once a step). The caller
-        has checked that each is finite."""
+    def add_all(
+        self,
+        body: pymunk.Body,
+        forces: list[tuple[float, float, Category]],
+        torque: float | None = None,
+    ) -> None:
+        """Record several forces (N, world frame, at the centre of gravity) on one body, in order,
+        then a pure ``torque`` (N·m) if given: the same float additions, in the same order, as one
+        :meth:`add` call each and one :meth:`add_torque`, without the per-call cost (a
+        controller's forces on its own body, written once a step). The caller has checked that
+        each is finite."""
         entry = self._entry(body)
         fx = entry.fx
         fy = entry.fy
@@ -115,6 +121,8 @@ class ForceLedger:
             parts[i + 1] += y
         entry.fx = fx
         entry.fy = fy
+        if torque is not None:
+            entry.torque += torque
 
     def add_torque(self, body: pymunk.Body, torque: float, category: Category) -> None:
         """Record a pure torque (N·m)."""

@@ -83,18 +83,30 @@ class ForceAPI(BodyRegistry):
             # The ledger's first entry replans the step (its on_first).
             self.ledger.add(b, force, point=point, category=category)
 
-    def apply_forces(self, body: pymunk.Body, forces: list[tuple[float, float, Category]]) -> None:
+    def apply_forces(
+        self,
+        body: pymunk.Body,
+        forces: list[tuple[float, float, Category]],
+        torque: float | None = None,
+    ) -> None:
         """Apply several forces ``(fx, fy, category)`` (N, world frame, at the centre of gravity)
-        to one body of this world during the coming step: one call and one check of each, for a
-        controller's own forces; the totals are those of one :meth:`apply_force` call each, in
-        order, bit for bit."""
-        limit = RUNAWAY_FORCE if self._config.guard else math.inf
+        and a pure ``torque`` (N·m, counter-clockwise; APPLIED) to one body of this world during
+        the coming step: one call and one check of each, for a controller's own forces; the
+        totals are those of one :meth:`apply_force` call each, in order, then one
+        :meth:`apply_torque`, bit for bit."""
+        guard = self._config.guard
+        limit = RUNAWAY_FORCE if guard else math.inf
         for fx, fy, _ in forces:
             # Within ±limit, NaN refused by the comparisons themselves.
             if not (-limit <= fx <= limit and -limit <= fy <= limit):
                 bounded_vec("force", (fx, fy), limit, "N")
+        if torque is not None:
+            # A torque is a force times a lever of at most the world's size (apply_torque).
+            t_limit = RUNAWAY_FORCE * MAX_COORDINATE if guard else math.inf
+            if not -t_limit <= torque <= t_limit:
+                bounded("torque", torque, t_limit, "N·m")
         if body.body_type == pymunk.Body.DYNAMIC:
-            self.ledger.add_all(self._own(body), forces)
+            self.ledger.add_all(self._own(body), forces, torque)
 
     def apply_torque(
         self, body: pymunk.Body | str, torque: float, *, category: Category = Category.APPLIED

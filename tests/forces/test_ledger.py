@@ -95,8 +95,8 @@ def test_non_finite_forces_and_torques_are_refused(bad: float) -> None:
 
 def test_add_all_is_one_add_each_in_order_bit_for_bit() -> None:
     """Law: recording forces with one ``add_all`` gives the body's totals and per-category sums
-    of one ``add`` call each, in the same order, to the last bit (a body that already has an
-    entry included)."""
+    of one ``add`` call each, in the same order, then one ``add_torque``, to the last bit (a
+    body that already has an entry, with a torque, included)."""
     rng = random.Random(7)
     cats = list(Category)
     for _ in range(200):
@@ -105,14 +105,18 @@ def test_add_all_is_one_add_each_in_order_bit_for_bit() -> None:
             for _ in range(rng.randint(1, 5))
         ]
         first = (rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0))
+        at = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))
+        torque = rng.choice((None, rng.uniform(-1e3, 1e3)))
         one, many = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
         a, b = ForceLedger(), ForceLedger()
-        a.add(one, first)
-        b.add(many, first)
+        a.add(one, first, point=at)
+        b.add(many, first, point=at)
         for fx, fy, cat in forces:
             a.add(one, (fx, fy), category=cat)
-        b.add_all(many, forces)
+        if torque is not None:
+            a.add_torque(one, torque, Category.APPLIED)
+        b.add_all(many, forces, torque)
         a.flush()
         b.flush()
-        assert (one.force.x, one.force.y) == (many.force.x, many.force.y)
+        assert (one.force.x, one.force.y, one.torque) == (many.force.x, many.force.y, many.torque)
         assert a.items()[0][1] == b.items()[0][1]

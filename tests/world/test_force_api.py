@@ -23,6 +23,8 @@ FORCE = (2.0, -1.0)
 TORQUE = 0.5
 """N·m."""
 
+_Forces = list[tuple[float, float, Category]]
+
 
 def box_world(substeps: int, tracked: bool) -> tuple[World, pymunk.Body]:
     world = World(WorldConfig(substeps=substeps), gravity=(0.0, 0.0))
@@ -89,16 +91,17 @@ def test_a_ledger_entry_acts_on_a_world_that_stepped_bare() -> None:
 def test_the_controller_applies_its_torques_through_the_world(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    """Law: the balance torque and its reaction on a dynamic ground reach the ledger through
-    ``World.apply_torque`` (which plans the step around them), never around it."""
+    """Law: the balance torque (with the controller's own forces, ``World.apply_forces``) and
+    its reaction on a dynamic ground (``World.apply_torque``) reach the ledger through the world
+    (which checks them and plans the step around them), never around it."""
     world = World()
     world.add_static_segment((-5.0, 0.0), (5.0, 0.0), radius=0.0)
     crate = world.add_box("crate", mass=200.0, size=(4.0, 0.5), position=(0.0, 0.25))
-    Controller(world, "player", position=(0.3, 1.45), angle=0.2)
+    player = Controller(world, "player", position=(0.3, 1.45), angle=0.2)
     through_world: list[tuple[pymunk.Body, float]] = []
     into_ledger: list[tuple[pymunk.Body, float]] = []
-    apply_torque = World.apply_torque
-    add_torque = ForceLedger.add_torque
+    apply_torque, apply_forces = World.apply_torque, World.apply_forces
+    add_torque, add_all = ForceLedger.add_torque, ForceLedger.add_all
 
     def spy_world(
         self: World, body: pymunk.Body | str, torque: float, *, category: Category
@@ -106,13 +109,29 @@ def test_the_controller_applies_its_torques_through_the_world(
         through_world.append((self.body(body) if isinstance(body, str) else body, torque))
         apply_torque(self, body, torque, category=category)
 
+    def spy_world_all(
+        self: World, body: pymunk.Body, forces: _Forces, torque: float | None = None
+    ) -> None:
+        if torque is not None:
+            through_world.append((body, torque))
+        apply_forces(self, body, forces, torque)
+
     def spy_ledger(self: ForceLedger, body: pymunk.Body, torque: float, category: Category) -> None:
         into_ledger.append((body, torque))
         add_torque(self, body, torque, category)
 
+    def spy_ledger_all(
+        self: ForceLedger, body: pymunk.Body, forces: _Forces, torque: float | None = None
+    ) -> None:
+        if torque is not None:
+            into_ledger.append((body, torque))
+        add_all(self, body, forces, torque)
+
     monkeypatch.setattr(World, "apply_torque", spy_world)
+    monkeypatch.setattr(World, "apply_forces", spy_world_all)
     monkeypatch.setattr(ForceLedger, "add_torque", spy_ledger)
+    monkeypatch.setattr(ForceLedger, "add_all", spy_ledger_all)
     world.run(0.5)
-    assert any(t != 0.0 for _, t in into_ledger), "no balance torque: the law was not exercised"
+    assert any(b is player.body and t != 0.0 for b, t in into_ledger), "no balance torque"
     assert any(body is crate for body, _ in into_ledger), "no reaction on the ground"
     assert into_ledger == through_world

@@ -14,7 +14,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from playground import Intent, World, WorldConfig
+from playground import Category, Intent, World, WorldConfig
 from playground.controller import Controller
 from playground.guard import RunawayError
 from playground.limits import MAX_COORDINATE, MAX_GRAVITY, MAX_MASS
@@ -46,6 +46,13 @@ def _world() -> World:
         (lambda w: w.apply_force("crate", (1e300, 0.0)), "force"),
         (lambda w: w.apply_force("crate", (1.0, 0.0), point=(NAN, 0.0)), "point"),
         (lambda w: w.apply_force("crate", (1.0, 0.0), point=(1e300, 0.0)), "point"),
+        (lambda w: w.apply_forces(w.body("crate"), [(0.0, NAN, Category.SUPPORT)]), "force"),
+        (lambda w: w.apply_forces(w.body("crate"), [(1e300, 0.0, Category.SUPPORT)]), "force"),
+        (lambda w: w.apply_forces(w.body("crate"), [], NAN), "torque"),
+        (
+            lambda w: w.apply_forces(w.body("crate"), [(1.0, 0.0, Category.SUPPORT)], -1e300),
+            "torque",
+        ),
         (lambda w: w.apply_impulse("crate", (INF, 0.0)), "impulse"),
         (lambda w: w.apply_impulse("crate", (1e9, 0.0)), "impulse"),
         (lambda w: w.set_mass("crate", 1e308), "mass"),
