@@ -23,7 +23,6 @@ import dataclasses
 import math
 import time
 from collections.abc import Callable, Sequence
-from typing import Any
 
 import pymunk
 import pymunk.batch as batch
@@ -91,12 +90,15 @@ class World(ForceAPI):
         # own normal impulse.
         self.space.collision_persistence = 1
         self._bare = False
+        # Whether the step has nothing to do but what the ledger may hold (see _plan).
+        self._idle = False
+        self._lap_start = 0.0  # perf_counter at the start of the stage being timed
         # Whether the next step must decide again what it runs: written by _replan and _plan only.
         self._plan_dirty = True
         self.time = 0.0
         self._epoch = (0, 0.0)  # (steps, time) when dt last changed
         self.steps = 0
-        self.ledger = ForceLedger(on_first=self._replan)
+        self.ledger = ForceLedger(on_first=self._ledger_filled)
         self.scalar_max_bodies = SCALAR_MAX_BODIES
         """Most tracked bodies the scalar path serves (0: never; set before stepping)."""
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
@@ -150,16 +152,25 @@ class World(ForceAPI):
         """Plan the next step again (something it must or need not do has changed)."""
         self._plan_dirty = True
 
+    def _ledger_filled(self) -> None:
+        """The ledger got its first force since it was last empty: the next step is not bare."""
+        self._bare = False
+
     def _plan(self) -> None:
         """Decide whether the next steps are bare (nothing but ``space.step``), and which path
-        serves the tracked bodies (:meth:`PhysicsStage.choose_path`)."""
+        serves the tracked bodies (:meth:`PhysicsStage.choose_path`).
+
+        The ledger is not part of the plan: it fills and empties every step of a level with a
+        controller. A step that is idle but for the ledger's forces is bare once they are
+        flushed (:meth:`step` sets that), until the ledger fills again (:meth:`_ledger_filled`).
+        """
         cfg = self._config
         gravity = self._gravity
         physics = self._physics
         schedule = self._schedule
         physics.choose_path(self.scalar_max_bodies, gravity.plain_ready(self.scalar_max_bodies))
         gravity.use_plain(physics.scalar_on)
-        self._bare = not (
+        self._idle = not (
             schedule.inputs
             or schedule.events
             or schedule.event_hooks
@@ -169,10 +180,10 @@ class World(ForceAPI):
             or physics.solver.bodies
             or physics.perceivers
             or schedule.observers
-            or len(self.ledger)
             or cfg.timing
             or cfg.substeps != 1
         )
+        self._bare = self._idle and not len(self.ledger)
         self._plan_dirty = False
 
     # -- gravity ---------------------------------------------------------------------------------
@@ -284,17 +295,20 @@ class World(ForceAPI):
             if self.steps >= self._guard_next:
                 self._guard_all()
             return
-        run = self._run_timed if self._config.timing else _run
+        # Each stage ends with lap(its name): it times the stage when config.timing is on.
+        lap = self._start_laps() if self._config.timing else _no_lap
         schedule = self._schedule
         gravity = self._gravity
         physics = self._physics
         # 1. inputs: scripts and keyboards turn into intents
         if schedule.inputs:
-            run(Stage.INPUTS, run_hooks, schedule.inputs, self)
+            run_hooks(schedule.inputs, self)
+            lap(Stage.INPUTS)
         # 2. events: scheduled scene changes
         events = schedule.events
         if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
-            run(Stage.EVENTS, schedule.run_events, self)
+            schedule.run_events(self)
+            lap(Stage.EVENTS)
         # From here to the step's end the world is locked: what a hook adds or removes waits for
         # the end, so every stage of this step sees the same bodies.
         self._locked = True
@@ -302,24 +316,31 @@ class World(ForceAPI):
             # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
             field = None
             if gravity.active:
-                field = run(Stage.GRAVITY, gravity.apply, self.time)
+                field = gravity.apply(self.time)
+                lap(Stage.GRAVITY)
             # 4. movers: kinematic bodies get the velocity that reaches their next pose
             if self._movers:
-                run(Stage.MOVERS, self._drive_movers)
+                self._drive_movers()
+                lap(Stage.MOVERS)
             # 5. control: controllers sense and put their forces in the ledger
             if schedule.controls:
-                run(Stage.CONTROL, run_hooks, schedule.controls, self)
+                run_hooks(schedule.controls, self)
+                lap(Stage.CONTROL)
             # 6. physics: flush forces, step the space (re-applying forces every substep)
-            run(Stage.PHYSICS, physics.step, field)
+            physics.step(field)
+            lap(Stage.PHYSICS)
             # 7. forces: reverse integration for tracked bodies
             if physics.solver.bodies:
-                run(Stage.FORCES, physics.solve)
+                physics.solve()
+                lap(Stage.FORCES)
             # 8. filter: perceived gravity for the bodies that perceive
             if physics.perceivers:
-                run(Stage.FILTER, physics.filter)
+                physics.filter()
+                lap(Stage.FILTER)
             if len(self.ledger):
                 self.ledger.clear()
-                self._replan()
+                # The forces are spent: a step with nothing else to do is bare again.
+                self._bare = self._idle
             self.steps += 1
             # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
             self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
@@ -332,7 +353,9 @@ class World(ForceAPI):
                 self._guard_all()
             # 9. observe: recorders, checks, views — read-only
             if schedule.observers:
-                run(Stage.OBSERVE, run_hooks, schedule.observers, self)
+                lap(None)  # the bookkeeping above is no stage's
+                run_hooks(schedule.observers, self)
+                lap(Stage.OBSERVE)
         finally:
             self._locked = False
         if self._pending:
@@ -346,15 +369,21 @@ class World(ForceAPI):
         for _ in range(round(steps)):
             self.step()
 
-    def _run_timed(self, stage: Stage, fn: Callable[..., Any], *args: object) -> Any:
-        t0 = time.perf_counter()
-        out = fn(*args)
-        elapsed = time.perf_counter() - t0
-        timing = self.timings[stage]
-        timing.total += elapsed
-        timing.calls += 1
-        timing.last = elapsed
-        return out
+    def _start_laps(self) -> Callable[[Stage | None], None]:
+        """Start timing this step's stages: :meth:`_lap` ends each."""
+        self._lap_start = time.perf_counter()
+        return self._lap
+
+    def _lap(self, stage: Stage | None) -> None:
+        """Charge the time since the last lap to ``stage`` (None: to no stage)."""
+        if stage is not None:
+            elapsed = time.perf_counter() - self._lap_start
+            timing = self.timings[stage]
+            timing.total += elapsed
+            timing.calls += 1
+            timing.last = elapsed
+        # Read after the bookkeeping, which is no stage's.
+        self._lap_start = time.perf_counter()
 
     def _drive_movers(self) -> None:
         for mover in self._movers:
@@ -375,6 +404,5 @@ class World(ForceAPI):
         raise RunawayError(who, self.steps, self.time, column, value, float(bound))
 
 
-def _run(stage: Stage, fn: Callable[..., Any], *args: object) -> Any:
-    """Run one stage untimed (``stage`` names it for :meth:`World._run_timed`'s sake)."""
-    return fn(*args)
+def _no_lap(stage: Stage | None) -> None:
+    """The lap of a step whose stages are not timed."""

@@ -21,6 +21,7 @@ from playground import (
     World,
     WorldConfig,
 )
+from playground.world.physics import PhysicsStage
 
 G = 9.81
 
@@ -79,6 +80,40 @@ def test_timing_off_records_nothing() -> None:
     world.track("box")
     world.run(0.1)
     assert all(timing.calls == 0 for timing in world.timings.values())
+
+
+def test_forces_every_step_do_not_plan_again_and_bare_steps_come_back(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Law: a ledger that fills and empties every step (a controller's forces) does not make
+    the world decide again what its steps run; once the forces stop, the steps are bare again
+    (``space.step`` alone, no physics stage) while the force acted on every step it was put."""
+    world = resting_world()
+    plans: list[int] = []
+    physics: list[int] = []
+    plan, physics_step = World._plan, PhysicsStage.step
+
+    def counted_plan(self: World) -> None:
+        plans.append(self.steps)
+        plan(self)
+
+    def counted_physics(self: PhysicsStage, field: object) -> None:
+        physics.append(world.steps)
+        physics_step(self, field)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(World, "_plan", counted_plan)
+    monkeypatch.setattr(PhysicsStage, "step", counted_physics)
+    box = world.body("box")
+    world.run(0.1)
+    lift = (0.0, 2.0 * box.mass * G)
+    for _ in range(30):
+        world.apply_force("box", lift)
+        world.step()
+    assert box.velocity.y > 0.0  # the force acted: twice the weight lifts the box
+    lifted = world.steps
+    world.run(0.1)
+    assert plans == [0]
+    assert physics == list(range(lifted - 30, lifted))
 
 
 def test_names_and_remove() -> None:
