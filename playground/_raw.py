@@ -1,5 +1,6 @@
-"""Plumbing under pymunk's properties: one body's state read and written through Chipmunk's C
-functions directly, for the per-step hot paths of a few bodies.
+"""Plumbing under pymunk's properties: one body's state, the space's gravity and a body's
+arbiters read (and forces written) through Chipmunk's C functions directly, for the per-step hot
+paths of a few bodies.
 
 A pymunk property is a Python function that calls the C getter and wraps the result: reading
 ``body.velocity`` costs ~0.5 µs, of which the C call is ~0.1 µs and the rest the wrapping (a
@@ -9,7 +10,9 @@ These functions call the same C getters and setters pymunk's properties call, so
 write the very same doubles (``tests/test_raw.py`` checks them against the properties, bit for
 bit, so an upgrade of pymunk that changed its internals fails there, not in a trajectory).
 
-They take a body's *handle* (:func:`handle`, the ``cpBody*`` pymunk keeps), not the body. This
+They take a body's *handle* (:func:`handle`, the ``cpBody*`` pymunk keeps), not the body; a
+body's arbiters are iterated with a C callback that gets the arbiter's handle (no ``Arbiter``
+object, no ``Vec2d``: ~1.5 µs for a box's two arbiters instead of ~4.5). This
 reaches into pymunk's private ``_body`` and ``_chipmunk_cffi``: pymunk's major version is pinned
 (``pymunk>=7.3,<8``) for its batch API, which is experimental in the same way.
 
@@ -31,36 +34,52 @@ import pymunk
 from pymunk._chipmunk_cffi import ffi, lib
 
 __all__ = [
+    "NULL",
+    "ArbiterHandle",
     "Handle",
     "angular_velocity",
+    "arbiter_body_ids",
+    "arbiter_callback",
+    "arbiter_impulse",
     "body_id",
     "body_type",
     "centre_of_gravity",
+    "each_arbiter",
     "force",
+    "gravity",
     "handle",
+    "is_first_contact",
+    "is_sleeping",
     "mass",
     "moment",
     "position",
     "rotation",
     "set_force",
     "set_torque",
+    "space_handle",
     "torque",
     "velocity",
 ]
 
 Handle = Any
-"""A ``cpBody*`` (a cffi pointer; untyped)."""
+"""A ``cpBody*`` or a ``cpSpace*`` (a cffi pointer; untyped)."""
+ArbiterHandle = Any
+"""A ``cpArbiter*``, valid only inside the callback it is given to."""
 
 _get_velocity = lib.cpBodyGetVelocity
 _get_position = lib.cpBodyGetPosition
 _get_rotation = lib.cpBodyGetRotation
 _get_force = lib.cpBodyGetForce
 _set_force = lib.cpBodySetForce
-_set_torque = lib.cpBodySetTorque
 _get_user_data = lib.cpBodyGetUserData
 _get_cog = lib.cpBodyGetCenterOfGravity
 _local_to_world = lib.cpBodyLocalToWorld
+_get_gravity = lib.cpSpaceGetGravity
+_total_impulse = lib.cpArbiterTotalImpulse
+_normal = lib.cpArbiterGetNormal
+_get_bodies = lib.cpArbiterGetBodies
 _cast = ffi.cast
+_new = ffi.new
 
 angular_velocity: Callable[[Handle], float] = lib.cpBodyGetAngularVelocity
 """``angular_velocity(h)``: the body's angular velocity, rad/s."""
@@ -72,11 +91,21 @@ moment: Callable[[Handle], float] = lib.cpBodyGetMoment
 """``moment(h)``: the body's moment of inertia, kg·m²."""
 body_type: Callable[[Handle], int] = lib.cpBodyGetType
 """``body_type(h)``: ``pymunk.Body.DYNAMIC``, ``KINEMATIC`` or ``STATIC`` (ints)."""
+is_sleeping: Callable[[Handle], int] = lib.cpBodyIsSleeping
+"""``is_sleeping(h)``: non-zero if the body sleeps (``body.is_sleeping``)."""
+set_torque: Callable[[Handle, float], None] = lib.cpBodySetTorque
+"""``set_torque(h, t)``: set the body's torque for the coming step, N·m (wakes it, as
+``body.torque = ...`` does)."""
 
 
 def handle(body: pymunk.Body) -> Handle:
     """The body's ``cpBody*``, valid as long as the body lives."""
     return body._body
+
+
+def space_handle(space: pymunk.Space) -> Handle:
+    """The space's ``cpSpace*``, valid as long as the space lives."""
+    return space._space
 
 
 def body_id(body: pymunk.Body) -> int:
@@ -88,6 +117,12 @@ def velocity(h: Handle) -> tuple[float, float]:
     """The body's velocity, m/s."""
     v = _get_velocity(h)
     return v.x, v.y
+
+
+def gravity(s: Handle) -> tuple[float, float]:
+    """The space's gravity (``space.gravity``) of a space handle (:func:`space_handle`), m/s²."""
+    g = _get_gravity(s)
+    return g.x, g.y
 
 
 def position(h: Handle) -> tuple[float, float]:
@@ -120,6 +155,42 @@ def set_force(h: Handle, fx: float, fy: float) -> None:
     _set_force(h, (fx, fy))
 
 
-def set_torque(h: Handle, t: float) -> None:
-    """Set the body's torque for the coming step, N·m (wakes it, as ``body.torque = ...``)."""
-    _set_torque(h, t)
+# -- a body's arbiters ---------------------------------------------------------------------------
+
+NULL = ffi.NULL
+"""The null pointer, for the ``data`` argument of :func:`each_arbiter`."""
+
+each_arbiter: Callable[[Handle, Any, Any], None] = lib.cpBodyEachArbiter
+"""``each_arbiter(h, callback, NULL)``: call ``callback`` (:func:`arbiter_callback`) on each
+arbiter of the body, in the order ``Body.each_arbiter`` gives them and, as there, presented from
+the body's side (its impulse is the one the body received; the normal points away from it)."""
+
+is_first_contact: Callable[[ArbiterHandle], int] = lib.cpArbiterIsFirstContact
+"""``is_first_contact(arb)``: non-zero on the first step the shapes touch
+(``arbiter.is_first_contact``)."""
+
+
+def arbiter_callback(visit: Callable[[Handle, ArbiterHandle, Any], None]) -> Any:
+    """A C callback for :func:`each_arbiter` that calls ``visit(body, arb, data)`` with the
+    handles. Keep it as long as it is used. ``visit`` must not raise: an exception in a C
+    callback is printed, not raised (read plain values only, as pymunk's own callbacks do)."""
+    return ffi.callback("void(cpBody *, cpArbiter *, void *)", visit)
+
+
+def arbiter_impulse(arb: ArbiterHandle) -> tuple[float, float, float, float]:
+    """(jx, jy, nx, ny): ``arbiter.total_impulse`` (N·s) and ``arbiter.normal`` of an arbiter
+    seen from the iterated body's side."""
+    j = _total_impulse(arb)
+    n = _normal(arb)
+    return j.x, j.y, n.x, n.y
+
+
+def arbiter_body_ids(arb: ArbiterHandle) -> tuple[int, int]:
+    """The ``id`` of each of the arbiter's bodies (``arbiter.bodies``), in that order."""
+    a = _new("cpBody *[1]")
+    b = _new("cpBody *[1]")
+    _get_bodies(arb, a, b)
+    return (
+        int(_cast("uintptr_t", _get_user_data(a[0]))),
+        int(_cast("uintptr_t", _get_user_data(b[0]))),
+    )

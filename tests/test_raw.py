@@ -102,3 +102,83 @@ def test_body_type_is_the_property() -> None:
     kinds = (pymunk.Body.DYNAMIC, pymunk.Body.KINEMATIC, pymunk.Body.STATIC)
     bodies = [pymunk.Body(1.0, 1.0, body_type=kind) for kind in kinds]
     assert [_raw.body_type(_raw.handle(b)) for b in bodies] == list(kinds)
+
+
+@given(_FINITE, _FINITE)
+def test_space_gravity_is_the_property(gx: float, gy: float) -> None:
+    space = pymunk.Space()
+    space.gravity = (gx, gy)
+    assert _bits(_raw.gravity(_raw.space_handle(space))) == _bits(tuple(space.gravity))
+
+
+def test_is_sleeping_is_the_property() -> None:
+    space = pymunk.Space()
+    space.sleep_time_threshold = 0.1
+    space.gravity = (0.0, -10.0)
+    floor = pymunk.Segment(space.static_body, (-5, 0), (5, 0), 0.1)
+    body = pymunk.Body(1.0, math.inf)
+    body.position = (0.0, 0.6)
+    space.add(floor, body, pymunk.Circle(body, 0.5))
+    seen = set()
+    for _ in range(600):
+        space.step(1 / 60)
+        assert bool(_raw.is_sleeping(_raw.handle(body))) == body.is_sleeping
+        seen.add(body.is_sleeping)
+    assert seen == {False, True}
+
+
+Seen = tuple[tuple[float, ...], bool, tuple[int, int]]
+"""(impulse and normal, first contact, the two bodies' ids) of one arbiter."""
+
+
+def _through_properties(body: pymunk.Body) -> list[Seen]:
+    seen: list[Seen] = []
+
+    def read(arb: pymunk.Arbiter) -> None:
+        a, b = arb.bodies
+        seen.append(((*arb.total_impulse, *arb.normal), arb.is_first_contact, (a.id, b.id)))
+
+    body.each_arbiter(read)
+    return seen
+
+
+def _through_raw(body: pymunk.Body) -> list[Seen]:
+    seen: list[Seen] = []
+
+    def read(_: _raw.Handle, arb: _raw.ArbiterHandle, data: object) -> None:
+        first = _raw.is_first_contact(arb) != 0
+        seen.append((_raw.arbiter_impulse(arb), first, _raw.arbiter_body_ids(arb)))
+
+    callback = _raw.arbiter_callback(read)
+    _raw.each_arbiter(_raw.handle(body), callback, _raw.NULL)
+    return seen
+
+
+@given(st.lists(st.tuples(_FINITE, _FINITE), min_size=2, max_size=6))
+def test_arbiter_reads_equal_the_properties_bit_for_bit(spins: list[tuple[float, float]]) -> None:
+    """Law: through the C iterator a body's arbiters come in the same order, seen from the same
+    side, with the same impulses, normals, first-contact flags and bodies as through
+    ``Body.each_arbiter`` and the ``Arbiter`` properties, on every step of a settling stack (first
+    contacts included)."""
+    space = pymunk.Space()
+    space.gravity = (0.0, -9.81)
+    floor = pymunk.Segment(space.static_body, (-5, 0), (5, 0), 0.1)
+    space.add(floor)
+    bodies = []
+    for i, (vx, w) in enumerate(spins):
+        body = pymunk.Body(1.0, 0.1)
+        body.position = (0.1 * (i % 2), 0.45 + 0.7 * i)
+        body.velocity = (vx * 1e-6, 0.0)
+        body.angular_velocity = w * 1e-6
+        space.add(body, pymunk.Poly.create_box(body, (0.6, 0.6)))
+        bodies.append(body)
+    arbiters = 0
+    for _ in range(60):
+        space.step(1 / 60)
+        for body in [*bodies, space.static_body]:
+            props, raw = _through_properties(body), _through_raw(body)
+            assert [(_bits(i), f, ids) for i, f, ids in raw] == [
+                (_bits(i), f, ids) for i, f, ids in props
+            ]
+            arbiters += len(raw)
+    assert arbiters > 0

@@ -13,6 +13,7 @@ from enum import Enum
 
 import pymunk
 
+from playground import _raw
 from playground.vec import Vec
 
 __all__ = ["Category", "ForceLedger"]
@@ -32,10 +33,11 @@ class Category(Enum):
 
 
 class _Entry:
-    __slots__ = ("body", "fx", "fy", "parts", "torque")
+    __slots__ = ("body", "fx", "fy", "h", "parts", "torque")
 
     def __init__(self, body: pymunk.Body) -> None:
         self.body = body
+        self.h = _raw.handle(body)  # written through the C setters the properties call
         self.fx = 0.0
         self.fy = 0.0
         self.torque = 0.0
@@ -132,15 +134,22 @@ class ForceLedger:
 
     def flush(self) -> None:
         """Write each body's total force and torque (replacing what it had)."""
+        set_force, set_torque = _raw.set_force, _raw.set_torque
         for e in self._entries.values():
-            e.body.force = (e.fx, e.fy)
-            e.body.torque = e.torque
+            set_force(e.h, e.fx, e.fy)
+            set_torque(e.h, e.torque)
 
     def clear(self) -> None:
         self._entries.clear()
 
     def __len__(self) -> int:
         return len(self._entries)
+
+    def parts(self, body: pymunk.Body) -> list[float] | None:
+        """``body``'s per-category sums ``[px, py, ax, ay, sx, sy]`` (N), None if it has no
+        forces (what :meth:`items` gives for it, without reading every body's id)."""
+        entry = self._entries.get(body)
+        return None if entry is None else entry.parts
 
     def items(self) -> list[tuple[int, list[float]]]:
         """(body id, per-category sums ``[px, py, ax, ay, sx, sy]``) of every body with forces."""

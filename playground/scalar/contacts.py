@@ -6,7 +6,9 @@ The sums of the vectorised contact split
 callback Chipmunk presents each arbiter from the body's side: ``total_impulse`` is the impulse
 the body received and ``normal`` points away from it, so they are the vector path's +J, +n for
 body A and −J, −n for body B, bit for bit (negation is exact). A body's impulses are summed in
-the order of their values, as there, so both paths give the same sums.
+the order of their values, as there, so both paths give the same sums. The arbiters are read
+through Chipmunk's iterator and getters directly (:mod:`playground._raw`: the same doubles, without
+an ``Arbiter`` object and a ``Vec2d`` per read).
 
 An arbiter that may report an impulse Chipmunk did not apply makes its bodies' split unknown for
 the step, by the vector path's rule (:meth:`ContactSplit._stale`): a continuing contact when the
@@ -18,9 +20,11 @@ tracked bodies' arbiters only (the only ones whose split is read).
 from __future__ import annotations
 
 from collections import deque
+from typing import Any
 
 import pymunk
 
+from playground import _raw
 from playground.scalar.row import Row
 
 __all__ = ["ContactSums"]
@@ -52,11 +56,16 @@ class ContactSums:
     (1.0, 0.0, False)
     """
 
-    __slots__ = ("history",)
+    __slots__ = ("_flags", "_impulses", "_pairs", "_visit", "history")
 
     def __init__(self) -> None:
         self.history: deque[tuple[int, frozenset[int]]] = deque()
         """(substep stamp, pair keys) of recent substeps, newest last, while persistence > 1."""
+        # The body being read: its arbiters' impulses and flags, and whether pair keys are kept.
+        self._impulses: list[Impulse] = []
+        self._flags: list[Flags] = []
+        self._pairs = False
+        self._visit = _raw.arbiter_callback(self._read)
 
     def accumulate(self, rows: list[Row], space: pymunk.Space, stamp: int, rescaled: bool) -> None:
         """Add one substep's arbiter impulses to each row's sums (``jx, jy, jnx, jny``) and set
@@ -66,15 +75,17 @@ class ContactSums:
         differs from the one before it.
         """
         persistence = int(space.collision_persistence)
-        pairs = persistence >= 2
+        pairs = self._pairs = persistence >= 2
         found: list[tuple[Row, list[Flags]]] = []
         keys: set[int] = set()
         any_first = False
         fits = True
+        each_arbiter, visit, null = _raw.each_arbiter, self._visit, _raw.NULL
         for r in rows:
             impulses: list[Impulse] = []
             flags: list[Flags] = []
-            r.body.each_arbiter(_read, impulses, flags, pairs)
+            self._impulses, self._flags = impulses, flags
+            each_arbiter(r.h, visit, null)
             if not impulses:
                 continue
             # Summed in the order of their values, as the vector path does.
@@ -126,18 +137,15 @@ class ContactSums:
             history.popleft()
         return cached_all, old
 
-
-def _read(arb: pymunk.Arbiter, impulses: list[Impulse], flags: list[Flags], pairs: bool) -> None:
-    """One arbiter, seen from the body whose arbiters are iterated; its pair key only while
-    pairs are kept."""
-    jx, jy = arb.total_impulse
-    nx, ny = arb.normal
-    dot = jx * nx + jy * ny
-    impulses.append((jx, jy, nx * dot, ny * dot))
-    key, fit = 0, True
-    if pairs:
-        a, b = arb.bodies
-        ia, ib = a.id, b.id
-        lo, hi = (ia, ib) if ia <= ib else (ib, ia)
-        key, fit = ((lo << 32) | hi) & _MASK, hi >> 32 == 0
-    flags.append((arb.is_first_contact, key, fit))
+    def _read(self, body: _raw.Handle, arb: _raw.ArbiterHandle, data: Any) -> None:
+        """One arbiter, seen from the body whose arbiters are iterated (the C callback: reads
+        plain values only); its pair key only while pairs are kept."""
+        jx, jy, nx, ny = _raw.arbiter_impulse(arb)
+        dot = jx * nx + jy * ny
+        self._impulses.append((jx, jy, nx * dot, ny * dot))
+        key, fit = 0, True
+        if self._pairs:
+            ia, ib = _raw.arbiter_body_ids(arb)
+            lo, hi = (ia, ib) if ia <= ib else (ib, ia)
+            key, fit = ((lo << 32) | hi) & _MASK, hi >> 32 == 0
+        self._flags.append((_raw.is_first_contact(arb) != 0, key, fit))

@@ -134,11 +134,15 @@ class ScalarPath:
         impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
         check_sleep = self.check_sleep
         first_sum = self._summed == 0
-        velocity, angular_velocity = _raw.velocity, _raw.angular_velocity
+        velocity, angular_velocity, is_sleeping = (
+            _raw.velocity,
+            _raw.angular_velocity,
+            _raw.is_sleeping,
+        )
         for r in self.rows:
-            b = r.body
-            r.vx, r.vy = velocity(r.h)
-            r.vw = angular_velocity(r.h)
+            h = r.h
+            r.vx, r.vy = velocity(h)
+            r.vw = angular_velocity(h)
             if not last:
                 if first_sum:
                     r.qx, r.qy, r.qw = r.vx, r.vy, r.vw
@@ -146,7 +150,7 @@ class ScalarPath:
                     r.qx += r.vx
                     r.qy += r.vy
                     r.qw += r.vw
-            if check_sleep and b.is_sleeping:
+            if check_sleep and is_sleeping(h):
                 r.seen = False
         if not last:
             self._summed += 1
@@ -172,7 +176,7 @@ class ScalarPath:
         summed = self._summed > 0
         gx, gy = space_gravity
         field = self._field
-        parts = {body_id: p for body_id, p in ledger.items()} if len(ledger) else None
+        parts = ledger.parts if len(ledger) else None
         for r in self.rows:
             if not r.seen:
                 r.valid = False
@@ -203,7 +207,7 @@ class ScalarPath:
                 ay -= r.ffy
             sx, sy, st = ex, ey, et
             if parts is not None:
-                p = parts.get(r.body.id)
+                p = parts(r.body)
                 if p is not None:
                     px += p[0]
                     py += p[1]

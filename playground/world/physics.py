@@ -20,6 +20,7 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
+from playground import _raw
 from playground._batch import BodyRows
 from playground.forces.ledger import ForceLedger
 from playground.forces.solver import ForceSolver
@@ -49,6 +50,7 @@ class PhysicsStage:
         up_at: Callable[[pymunk.Body], Vec],
     ) -> None:
         self.space = space
+        self._space_h = _raw.space_handle(space)
         self.ledger = ledger
         self._replan = replan
         self._up_at = up_at
@@ -166,22 +168,18 @@ class PhysicsStage:
         """PHYSICS: write the forces, step the space ``config.substeps`` times, and feed each
         substep's velocities to the solver. ``field`` is the gravity stage's force on every body
         of a field that varies in space: batch rows, or body by body on the scalar path."""
+        self.ledger.flush()
+        if self.scalar_on:
+            assert field is None or not callable(field)
+            self._step_scalar(field)
+            return
         cfg = self.config
         n = cfg.substeps
         h = cfg.dt / n
-        self.ledger.flush()
         # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
         # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
-        scalar = self.scalar_on
         write = False  # whether a substep after the first must write the forces again
-        if scalar:
-            assert field is None or not callable(field)
-            if field is not None:
-                PlainField.write(field, sleeping=self.solver.check_sleep)
-            self.scalar.before_step(field)
-            self._scalar_synced = False
-            held = _forces_on(self.space) if n > 1 else []
-        elif field is not None or self.solver.bodies or n > 1:
+        if field is not None or self.solver.bodies or n > 1:
             assert field is None or callable(field)
             rows = self._rows
             field_rows: NDArray[np.float64] | None = None
@@ -205,21 +203,13 @@ class PhysicsStage:
             if self.solver.bodies:
                 self.solver.before_step(rows.ids, rows.flat, rows.width, field_rows)
         for k in range(n):
-            if k > 0 and scalar:
-                for body, held_force, held_torque in held:
-                    body.force = held_force
-                    body.torque = held_torque
-            elif k > 0 and write:
+            if k > 0 and write:
                 self._write_forces()
             # Chipmunk rescales warm starts by h / (its last step) when the length changes.
             rescaled = self.config.contact_split and self.space.current_time_step != h
             self.space.step(h)
             self._space_steps += 1
-            if scalar:
-                self.scalar.after_substep(
-                    self.space, last=k == n - 1, stamp=self._space_steps, rescaled=rescaled
-                )
-            elif self.solver.bodies:
+            if self.solver.bodies:
                 ids, vel = self._rows.read_velocities(self.space)
                 self.solver.after_substep(
                     self.space,
@@ -229,6 +219,30 @@ class PhysicsStage:
                     stamp=self._space_steps,
                     rescaled=rescaled,
                 )
+
+    def _step_scalar(self, field: FieldOnBodies | None) -> None:
+        """PHYSICS on the scalar path: the rows read before the step and after each substep. With
+        substeps, every force on a body is written again before each later substep."""
+        cfg = self.config
+        n = cfg.substeps
+        h = cfg.dt / n
+        space, scalar = self.space, self.scalar
+        if field is not None:
+            PlainField.write(field, sleeping=self.solver.check_sleep)
+        scalar.before_step(field)
+        self._scalar_synced = False
+        held = _forces_on(space) if n > 1 else []
+        split = cfg.contact_split
+        for k in range(n):
+            if k > 0:
+                for body, held_force, held_torque in held:
+                    body.force = held_force
+                    body.torque = held_torque
+            # Chipmunk rescales warm starts by h / (its last step) when the length changes.
+            rescaled = split and space.current_time_step != h
+            space.step(h)
+            self._space_steps += 1
+            scalar.after_substep(space, last=k == n - 1, stamp=self._space_steps, rescaled=rescaled)
 
     def _write_forces(self) -> None:
         """Write the forces of the last batch read back, in one batch or per body if sleeping."""
@@ -252,11 +266,10 @@ class PhysicsStage:
         """FORCES: reverse integration for the tracked bodies."""
         cfg = self.config
         if self.scalar_on:
-            g = self.space.gravity
             self.scalar.finish(
                 dt=cfg.dt,
                 damping=cfg.damping,
-                space_gravity=(g.x, g.y),
+                space_gravity=_raw.gravity(self._space_h),
                 ledger=self.ledger,
                 substeps=cfg.substeps,
             )

@@ -120,3 +120,17 @@ def test_add_all_is_one_add_each_in_order_bit_for_bit() -> None:
         b.flush()
         assert (one.force.x, one.force.y, one.torque) == (many.force.x, many.force.y, many.torque)
         assert a.items()[0][1] == b.items()[0][1]
+
+
+def test_parts_of_a_body_are_its_items_and_none_without_forces() -> None:
+    """Law: ``parts(body)`` is what ``items()`` lists for that body's id (its per-category sums),
+    and None for a body with no forces."""
+    bodies = [pymunk.Body(1.0, 1.0) for _ in range(3)]
+    ledger = ForceLedger()
+    ledger.add(bodies[0], (1.0, 2.0), category=Category.SUPPORT)
+    ledger.add(bodies[2], (-3.0, 0.5), category=Category.PASSIVE)
+    ledger.add(bodies[2], (0.25, 4.0))
+    by_id = dict(ledger.items())
+    assert ledger.parts(bodies[0]) == by_id[bodies[0].id] == [0.0, 0.0, 0.0, 0.0, 1.0, 2.0]
+    assert ledger.parts(bodies[2]) == by_id[bodies[2].id] == [-3.0, 0.5, 0.25, 4.0, 0.0, 0.0]
+    assert ledger.parts(bodies[1]) is None
