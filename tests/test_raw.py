@@ -68,7 +68,8 @@ def test_writes_equal_the_property_writes(fx: float, fy: float, t: float) -> Non
     assert _bits((*raw.force, raw.torque)) == _bits((*prop.force, prop.torque))
 
 
-def test_a_write_wakes_a_sleeping_body_as_the_property_does() -> None:
+def _ball_on_a_floor() -> tuple[pymunk.Space, pymunk.Body]:
+    """A ball resting on a floor in a space where bodies fall asleep after 0.1 s at rest."""
     space = pymunk.Space()
     space.sleep_time_threshold = 0.1
     space.gravity = (0.0, -10.0)
@@ -76,6 +77,11 @@ def test_a_write_wakes_a_sleeping_body_as_the_property_does() -> None:
     body = pymunk.Body(1.0, math.inf)
     body.position = (0.0, 0.6)
     space.add(floor, body, pymunk.Circle(body, 0.5))
+    return space, body
+
+
+def test_a_write_wakes_a_sleeping_body_as_the_property_does() -> None:
+    space, body = _ball_on_a_floor()
     for _ in range(600):
         space.step(1 / 60)
     assert body.is_sleeping
@@ -112,13 +118,7 @@ def test_space_gravity_is_the_property(gx: float, gy: float) -> None:
 
 
 def test_is_sleeping_is_the_property() -> None:
-    space = pymunk.Space()
-    space.sleep_time_threshold = 0.1
-    space.gravity = (0.0, -10.0)
-    floor = pymunk.Segment(space.static_body, (-5, 0), (5, 0), 0.1)
-    body = pymunk.Body(1.0, math.inf)
-    body.position = (0.0, 0.6)
-    space.add(floor, body, pymunk.Circle(body, 0.5))
+    space, body = _ball_on_a_floor()
     seen = set()
     for _ in range(600):
         space.step(1 / 60)
