@@ -40,6 +40,7 @@ __all__ = [
     "angular_velocity",
     "arbiter_body_ids",
     "arbiter_callback",
+    "arbiter_handle",
     "arbiter_impulse",
     "body_id",
     "body_type",
@@ -172,9 +173,19 @@ is_first_contact: Callable[[ArbiterHandle], int] = lib.cpArbiterIsFirstContact
 
 def arbiter_callback(visit: Callable[[Handle, ArbiterHandle, Any], None]) -> Any:
     """A C callback for :func:`each_arbiter` that calls ``visit(body, arb, data)`` with the
-    handles. Keep it as long as it is used. ``visit`` must not raise: an exception in a C
-    callback is printed, not raised (read plain values only, as pymunk's own callbacks do)."""
-    return ffi.callback("void(cpBody *, cpArbiter *, void *)", visit)
+    handles, or None where the platform refuses cffi callbacks (memory both writable and
+    executable): then iterate with ``Body.each_arbiter`` and :func:`arbiter_handle`. Keep it as
+    long as it is used. ``visit`` must not raise: an exception in a C callback is printed, not
+    raised (read plain values only, as pymunk's own callbacks do)."""
+    try:
+        return ffi.callback("void(cpBody *, cpArbiter *, void *)", visit)
+    except (MemoryError, RuntimeError):  # pragma: no cover - a platform without cffi callbacks
+        return None
+
+
+def arbiter_handle(arb: pymunk.Arbiter) -> ArbiterHandle:
+    """The ``cpArbiter*`` of an arbiter pymunk gives a callback, valid only inside it."""
+    return arb._arbiter
 
 
 def arbiter_impulse(arb: ArbiterHandle) -> tuple[float, float, float, float]:

@@ -85,7 +85,10 @@ class ContactSums:
             impulses: list[Impulse] = []
             flags: list[Flags] = []
             self._impulses, self._flags = impulses, flags
-            each_arbiter(r.h, visit, null)
+            if visit is not None:
+                each_arbiter(r.h, visit, null)
+            else:
+                r.body.each_arbiter(self._read_arbiter)
             if not impulses:
                 continue
             # Summed in the order of their values, as the vector path does.
@@ -136,6 +139,10 @@ class ContactSums:
         while history[0][0] < stamp - persistence:
             history.popleft()
         return cached_all, old
+
+    def _read_arbiter(self, arb: pymunk.Arbiter) -> None:
+        """:meth:`_read` from ``Body.each_arbiter`` (where cffi callbacks are refused)."""
+        self._read(None, _raw.arbiter_handle(arb), None)
 
     def _read(self, body: _raw.Handle, arb: _raw.ArbiterHandle, data: Any) -> None:
         """One arbiter, seen from the body whose arbiters are iterated (the C callback: reads
