@@ -18,6 +18,8 @@ _READ = _F.BODY_ID | _F.VELOCITY | _F.ANGULAR_VELOCITY | _F.FORCE | _F.TORQUE
 _READ_POS = _F.BODY_ID | _F.POSITION
 _READ_ALL = _READ | _F.POSITION
 """A read with positions: x, y, then the state columns (batch packs fields in flag order)."""
+_READ_FIELD = _F.BODY_ID | _F.POSITION | _F.FORCE | _F.TORQUE
+"""What a field alone needs: x, y, fx, fy, torque (no velocities: nothing tracked)."""
 _WRITE = _F.FORCE | _F.TORQUE
 _A = batch.ArbiterFields
 _ARBITERS = _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.IS_FIRST_CONTACT | _A.NORMAL
@@ -42,6 +44,7 @@ class BodyRows:
         "_vel",
         "_vel_id_bytes",
         "_vel_ids",
+        "_xy_at",
         "ids",
         "positions",
         "state",
@@ -61,6 +64,7 @@ class BodyRows:
         """x, y (m) of each row, from the last read with ``positions``."""
         self.width = 6
         """Floats per row of the last :meth:`read` (8 with positions: x, y come first)."""
+        self._xy_at = np.zeros((0, 2), dtype=np.intp)
 
     def _ids_of(self, buffer: batch.Buffer) -> NDArray[np.uintp]:
         """The ids of a state read into ``buffer``: the last array again if they are the same."""
@@ -105,6 +109,30 @@ class BodyRows:
             self._vel_id_bytes = raw
             ids = self._vel_ids = np.frombuffer(raw, dtype=np.uintp)
         return ids, np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 3)
+
+    def read_forces(self, space: pymunk.Space) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Read every body's position (into :attr:`positions`), force and torque: the (fx, fy)
+        rows as a contiguous copy (to add to and write with :meth:`write_xy_forces`) and the
+        torques (a view). :attr:`state` is not read."""
+        buffer = self._in
+        buffer.clear()
+        batch.get_space_bodies(space, _READ_FIELD, buffer)
+        self._ids_of(buffer)
+        rows = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 5)
+        self.positions = rows[:, 0:2]
+        m = len(rows)
+        if self._xy_at.shape[0] != m:
+            self._xy_at = np.arange(m)[:, None] * 5 + np.arange(2, 4)
+        return np.take(rows.reshape(-1), self._xy_at), rows[:, 4]
+
+    def write_xy_forces(self, space: pymunk.Space, forces: NDArray[np.float64]) -> None:
+        """Write (fx, fy) rows (contiguous) in the order of the last read; torques stay.
+
+        Only valid while no body sleeps and no body was added or removed since the read.
+        """
+        self._out.set_float_buf(forces.reshape(-1))
+        self._out.set_int_buf(self.ids)
+        batch.set_space_bodies(space, _F.FORCE, self._out)
 
     def write_forces(self, space: pymunk.Space, forces: NDArray[np.float64]) -> None:
         """Write (fx, fy, torque) rows in the order of the last :meth:`read`.

@@ -34,10 +34,12 @@ from playground.vec import Vec
 
 __all__ = ["FieldForces", "GravityStage"]
 FieldForces = Callable[
-    [NDArray[np.uintp], NDArray[np.float64]], tuple[NDArray[np.intp], NDArray[np.float64]]
+    [NDArray[np.uintp], NDArray[np.float64]],
+    tuple[NDArray[np.intp] | slice, NDArray[np.float64]],
 ]
 """A field that varies in space, at the bodies of one batch read: given the read's body ids and
-their (x, y) rows (m), the rows that are named dynamic bodies and the field's force (N) on each."""
+their (x, y) rows (m), the rows that are named dynamic bodies (their indices, or a slice when
+they are one run) and the field's force (N) on each."""
 
 _DEFAULT_RULE = GravityRule()
 """The rule of a body that has none (frozen, so one instance serves every read)."""
@@ -78,7 +80,7 @@ class GravityStage:
         self._field_rows: (
             tuple[
                 NDArray[np.uintp],
-                NDArray[np.intp],
+                NDArray[np.intp] | slice,
                 NDArray[np.float64],
                 NDArray[np.float64],
                 NDArray[np.float64],
@@ -207,7 +209,7 @@ class GravityStage:
 
     def forces_at(
         self, ids: NDArray[np.uintp], pos: NDArray[np.float64]
-    ) -> tuple[NDArray[np.intp], NDArray[np.float64]]:
+    ) -> tuple[NDArray[np.intp] | slice, NDArray[np.float64]]:
         """The field's force (N) on the named dynamic bodies among ``ids`` at ``pos`` (m) at the
         time of the last :meth:`apply`: their rows in the read, and one (fx, fy) row each."""
         t = self._t
@@ -215,13 +217,18 @@ class GravityStage:
         if cache is None or not (cache[0] is ids or np.array_equal(cache[0], ids)):
             # Row order only changes when bodies are added, removed, sleep or wake.
             reg = lookup(self._reg_ids, ids)
-            rows = np.nonzero(reg >= 0)[0]
-            idx = reg[rows]
+            hit = np.nonzero(reg >= 0)[0]
+            idx = reg[hit]
             mass = np.repeat(self._reg_mass[idx], 2).reshape(-1, 2)  # contiguous [m, m] rows
+            # The named dynamic bodies are usually one run of rows (the static body comes
+            # last): a slice then, cheaper to index than the rows one by one.
+            run = len(hit) > 0 and int(hit[-1]) - int(hit[0]) == len(hit) - 1
+            rows = slice(int(hit[0]), int(hit[-1]) + 1) if run else hit
             cache = (ids, rows, mass, self._reg_scale[idx], self._reg_dir[idx])
             self._field_rows = cache
         _, rows, mass, scale, direction = cache
-        g = self.field.at(np.take(pos, rows, axis=0), t)
+        points = pos[rows] if isinstance(rows, slice) else np.take(pos, rows, axis=0)
+        g = self.field.at(points, t)
         if self._rules:
             g = apply_rules(g, scale, direction)
         return rows, g * mass

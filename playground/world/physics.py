@@ -179,7 +179,10 @@ class PhysicsStage:
         # Forces set straight on a body (``body.force``) are re-applied with the ledger's before
         # every substep, tracked or not (see WorldConfig.substeps): with substeps, read them all.
         write = False  # whether a substep after the first must write the forces again
-        if field is not None or self.solver.bodies or n > 1:
+        if field is not None and n == 1 and not self.solver.bodies and not self.solver.check_sleep:
+            assert callable(field)
+            self._field_only(field)
+        elif field is not None or self.solver.bodies or n > 1:
             assert field is None or callable(field)
             rows = self._rows
             field_rows: NDArray[np.float64] | None = None
@@ -243,6 +246,17 @@ class PhysicsStage:
             space.step(h)
             self._space_steps += 1
             scalar.after_substep(space, last=k == n - 1, stamp=self._space_steps, rescaled=rescaled)
+
+    def _field_only(self, field: FieldForces) -> None:
+        """A field on untracked bodies in one substep without sleeping: positions and forces are
+        all it reads, and the forces all it writes (the torques stay as they are)."""
+        rows = self._rows
+        forces, torques = rows.read_forces(self.space)
+        at, force = field(rows.ids, rows.positions)
+        forces[at] += force
+        # pymunk cleared every force after its last step: write them only if one is set.
+        if forces.any() or torques.any():
+            rows.write_xy_forces(self.space, forces)
 
     def _write_forces(self) -> None:
         """Write the forces of the last batch read back, in one batch or per body if sleeping."""

@@ -45,18 +45,25 @@ def test_a_rule_in_a_uniform_field_is_one_passive_correction_force() -> None:
     assert world.body("a").velocity.y == pytest.approx(-G / 2, rel=1e-9)
 
 
-def test_a_field_that_varies_is_evaluated_at_the_bodies_of_one_read() -> None:
+@pytest.mark.parametrize("between", [False, True])
+def test_a_field_that_varies_is_evaluated_at_the_bodies_of_one_read(between: bool) -> None:
     """Law: for a field that varies in space the stage hands the physics stage an evaluation at
-    the bodies of its batch read: the rows of the named dynamic bodies, with m·g at each one's
-    position, and none for a kinematic body."""
+    the bodies of its batch read: the rows of the named dynamic bodies (a slice when they are
+    one run of rows, their indices when a kinematic body sits between them), with m·g at each
+    one's position, and none for a kinematic body."""
     world = World(gravity=Radial(radius=1.0))
     world.add_box("a", mass=3.0, size=(0.2, 0.2), position=(0.0, 2.0))
     world.add("k", pymunk.Body(body_type=pymunk.Body.KINEMATIC))
+    if between:
+        world.add_box("b", mass=2.0, size=(0.2, 0.2), position=(1.0, 3.0))
     field = world._gravity.apply(0.0)
     assert callable(field)
     rows = BodyRows()
     rows.read(world.space, positions=True)
     at, force = field(rows.ids, rows.positions)
+    assert isinstance(at, slice) is not between
     by_id = dict(zip(rows.ids[at].tolist(), force.tolist(), strict=True))
-    gx, gy = world.gravity_at("a")
-    assert by_id == {world.body("a").id: [3.0 * gx, 3.0 * gy]}
+    expected = {world.body("a").id: [3.0 * g for g in world.gravity_at("a")]}
+    if between:
+        expected[world.body("b").id] = [2.0 * g for g in world.gravity_at("b")]
+    assert by_id == expected

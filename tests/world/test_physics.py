@@ -191,3 +191,37 @@ def test_a_runaway_on_the_batch_path_looks_at_forces_not_torques() -> None:
     body_id, column, value, _ = physics.runaway() or (0, ("", "", ""), 0.0, 0.0)
     assert body_id == world.body("b7").id and column == ("engine force", "x", "N")
     assert value == -1e300
+
+
+@pytest.mark.parametrize("push", ["ledger force", "ledger torque", "straight force"])
+def test_a_field_alone_moves_bodies_as_the_full_batch_path_does(push: str) -> None:
+    """Law: with nothing tracked, one substep and no sleeping, a field reads only positions and
+    forces and writes only forces; the bodies move as on the batch path that reads and writes
+    whole rows (one body tracked there), to the last bit, with forces and torques of the ledger
+    or set straight on a body (the torques it does not write stay)."""
+    worlds = [_untracked_pile(12), _untracked_pile(12)]
+    worlds[1].scalar_max_bodies = 0
+    worlds[1].track("b0")
+    for world in worlds:
+        world.gravity = Radial(center=(0.0, -40.0), radius=40.0, softening=0.0)
+    for step in range(60):
+        for world in worlds:
+            if push == "ledger force":
+                world.apply_force("b3", (5.0, 20.0), point=(world.body("b3").position.x, 0.4))
+            elif push == "ledger torque":
+                world.apply_torque("b5", 3.0)
+            elif step % 7 == 0:
+                world.body("b7").force = (0.0, 30.0)
+                world.body("b7").torque = -2.0
+            world.step()
+    lean, full = worlds
+    assert not lean._physics.solver.bodies and full._physics.solver.bodies
+    for name in lean.names:
+        a, b = lean.body(name), full.body(name)
+        assert (a.position, a.angle, a.velocity, a.angular_velocity) == (
+            b.position,
+            b.angle,
+            b.velocity,
+            b.angular_velocity,
+        ), name
+    assert lean.body("b5").angle != 0.0 or push != "ledger torque"
