@@ -45,9 +45,11 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class ControllerForces:
-    """The forces the controller put on its own body in the last step (N, N·m).
+    """The forces the controller put on its own body in the last step (N, N·m). Read-only by
+    convention, not frozen (a frozen dataclass costs ~3× more to build, and one is built every
+    step; a changed copy is made with ``dataclasses.replace``).
 
     ``grip`` is the joint force of the step before (a joint's force is known only after the
     step it acts in).

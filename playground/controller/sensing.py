@@ -33,9 +33,12 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class GroundHit:
-    """What the ground probe found (plain values except the hit body).
+    """What the ground probe found (plain values except the hit body). Read-only by convention,
+    not frozen: a frozen dataclass sets each field through ``object.__setattr__``, which made
+    building one ~5× dearer (~0.7 µs), and the probe builds one every step (a changed copy is
+    made with ``dataclasses.replace``).
 
     Attributes:
         body: the body hit.
