@@ -18,6 +18,7 @@ from collections.abc import Callable
 import pymunk
 
 from playground import _raw
+from playground._contacts import Contacts
 from playground._sweep import Sweep
 from playground._validate import finite
 from playground.controller import grab, laws, sensing, states, switches
@@ -109,6 +110,7 @@ class Controller:
         self.body = body
         # The body's cpBody*: the step reads its state through the C getters (playground._raw).
         self._h = _raw.handle(body)
+        self._contacts = Contacts(body)
         self.shape = shape
         world.add(name, body, shape)
         world.track(name)

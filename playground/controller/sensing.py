@@ -196,27 +196,11 @@ def ground_acceleration(
 
 def contact_load(self: Controller, world: World, ux: float, uy: float) -> float:
     """Force pressing on us along −up through contacts in the last step, N (the floor's push
-    along +up does not count)."""
-    h = world.config.dt / world.config.substeps
-    load = 0.0
-
-    def visit(arb: pymunk.Arbiter) -> None:
-        nonlocal load
-        # Our body is the arbiter's first; total_impulse is the impulse on it.
-        jx, jy = arb.total_impulse
-        load += max(0.0, -(jx * ux + jy * uy)) / h
-
-    self.body.each_arbiter(visit)
-    return load
+    along +up does not count): each contact's impulse over the last substep's length."""
+    cfg = world.config
+    return self._contacts.load(ux, uy, cfg.dt / cfg.substeps)
 
 
 def touching(self: Controller) -> bool:
     """Whether any contact touches the body now."""
-    found = False
-
-    def visit(arb: pymunk.Arbiter) -> None:
-        nonlocal found
-        found = True
-
-    self.body.each_arbiter(visit)
-    return found
+    return self._contacts.touching()
