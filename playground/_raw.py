@@ -47,6 +47,8 @@ __all__ = [
     "centre_of_gravity",
     "each_arbiter",
     "force",
+    "get_force",
+    "get_velocity",
     "gravity",
     "handle",
     "is_first_contact",
@@ -82,6 +84,11 @@ _get_bodies = lib.cpArbiterGetBodies
 _cast = ffi.cast
 _new = ffi.new
 
+get_velocity: Callable[[Handle], Any] = lib.cpBodyGetVelocity
+"""``get_velocity(h)``: the body's velocity as Chipmunk's ``cpVect`` (read ``.x`` and ``.y`` at
+once, m/s): :func:`velocity` without building a tuple, for the hottest loops."""
+get_force: Callable[[Handle], Any] = lib.cpBodyGetForce
+"""``get_force(h)``: the force set on the body for the coming step as a ``cpVect`` (N)."""
 angular_velocity: Callable[[Handle], float] = lib.cpBodyGetAngularVelocity
 """``angular_velocity(h)``: the body's angular velocity, rad/s."""
 torque: Callable[[Handle], float] = lib.cpBodyGetTorque

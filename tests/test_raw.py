@@ -182,3 +182,12 @@ def test_arbiter_reads_equal_the_properties_bit_for_bit(spins: list[tuple[float,
             ]
             arbiters += len(raw)
     assert arbiters > 0
+
+
+@given(_FINITE, _FINITE, _FINITE, _FINITE, _FINITE, _FINITE)
+def test_vector_structs_equal_the_properties_bit_for_bit(
+    vx: float, vy: float, w: float, angle: float, fx: float, fy: float
+) -> None:
+    body = _stepped_body(vx, vy, w, angle, fx, fy)
+    v, f = _raw.get_velocity(_raw.handle(body)), _raw.get_force(_raw.handle(body))
+    assert _bits((v.x, v.y, f.x, f.y)) == _bits((*body.velocity, *body.force))

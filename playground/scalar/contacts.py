@@ -105,6 +105,9 @@ class ContactSums:
                 keys.add(key)
                 fits = fits and fit
             found.append((r, flags))
+        if not found and not pairs:
+            self.history.clear()  # no arbiter, no pair to remember
+            return
         cached_all, old = self._cached(pairs, keys, stamp, persistence, any_first, fits)
         for r, flags in found:
             for first, key, _ in flags:

@@ -111,13 +111,15 @@ class ScalarPath:
         self._field = field is not None
         self._summed = 0
         split = self.contact_split
-        velocity, angular_velocity = _raw.velocity, _raw.angular_velocity
-        force, torque = _raw.force, _raw.torque
+        get_velocity, angular_velocity = _raw.get_velocity, _raw.angular_velocity
+        get_force, torque = _raw.get_force, _raw.torque
         for r in self.rows:
             h = r.h
-            r.v0x, r.v0y = velocity(h)
+            v = get_velocity(h)
+            r.v0x, r.v0y = v.x, v.y
             r.v0w = angular_velocity(h)
-            r.fx, r.fy = force(h)
+            f = get_force(h)
+            r.fx, r.fy = f.x, f.y
             r.ft = torque(h)
             r.seen = True
             if field is not None:
@@ -134,14 +136,12 @@ class ScalarPath:
         impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
         check_sleep = self.check_sleep
         first_sum = self._summed == 0
-        velocity, angular_velocity, is_sleeping = (
-            _raw.velocity,
-            _raw.angular_velocity,
-            _raw.is_sleeping,
-        )
+        get_velocity, angular_velocity = _raw.get_velocity, _raw.angular_velocity
+        is_sleeping = _raw.is_sleeping
         for r in self.rows:
             h = r.h
-            r.vx, r.vy = velocity(h)
+            v = get_velocity(h)
+            r.vx, r.vy = v.x, v.y
             r.vw = angular_velocity(h)
             if not last:
                 if first_sum:
@@ -173,6 +173,8 @@ class ScalarPath:
                 r.i_dt = 0.0 if r.locked else r.moment / dt
             self._dt = dt
         d = damping ** (dt / substeps)
+        k = 1.0 - d
+        damped = d != 1.0
         summed = self._summed > 0
         gx, gy = space_gravity
         field = self._field
@@ -181,31 +183,33 @@ class ScalarPath:
             if not r.seen:
                 r.valid = False
                 continue
-            dvx = r.vx - r.v0x
-            dvy = r.vy - r.v0y
-            dvw = r.vw - r.v0w
-            if d != 1.0:
-                k = 1.0 - d
+            v0x, v0y, v0w = r.v0x, r.v0y, r.v0w
+            dvx = r.vx - v0x
+            dvy = r.vy - v0y
+            dvw = r.vw - v0w
+            if damped:
                 if summed:
-                    dvx += k * (r.v0x + r.qx)
-                    dvy += k * (r.v0y + r.qy)
-                    dvw += k * (r.v0w + r.qw)
+                    dvx += k * (v0x + r.qx)
+                    dvy += k * (v0y + r.qy)
+                    dvw += k * (v0w + r.qw)
                 else:
-                    dvx += k * r.v0x
-                    dvy += k * r.v0y
-                    dvw += k * r.v0w
-            wx, wy = r.m * gx, r.m * gy
-            ex = dvx * r.m_dt - r.fx - wx
-            ey = dvy * r.m_dt - r.fy - wy
-            et = 0.0 if r.locked else dvw * r.i_dt - r.ft - 0.0
+                    dvx += k * v0x
+                    dvy += k * v0y
+                    dvw += k * v0w
+            m, m_dt = r.m, r.m_dt
+            fx, fy, ft = r.fx, r.fy, r.ft
+            wx, wy = m * gx, m * gy
+            ex = dvx * m_dt - fx - wx
+            ey = dvy * m_dt - fy - wy
+            et = 0.0 if r.locked else dvw * r.i_dt - ft - 0.0
             px, py = wx, wy
-            ax, ay, at = r.fx, r.fy, r.ft
+            ax, ay = fx, fy
             if field:
                 px += r.ffx
                 py += r.ffy
                 ax -= r.ffx
                 ay -= r.ffy
-            sx, sy, st = ex, ey, et
+            sx, sy = ex, ey
             if parts is not None:
                 p = parts(r.body)
                 if p is not None:
@@ -217,9 +221,10 @@ class ScalarPath:
                     ay -= p[1] + p[5]
             r.ex, r.ey, r.et = ex, ey, et
             r.px, r.py = px, py
-            r.ax, r.ay, r.at = ax, ay, at
-            r.sx, r.sy, r.st = sx, sy, st
-            r.sp = (sx * r.inv_m, sy * r.inv_m)
+            r.ax, r.ay, r.at = ax, ay, ft
+            r.sx, r.sy, r.st = sx, sy, et
+            inv_m = r.inv_m
+            r.sp = (sx * inv_m, sy * inv_m)
             r.valid = True
         if self.contact_split:
             _split(self.rows, dt)
@@ -240,33 +245,35 @@ class ScalarPath:
         c_d = 1.0 - a_d
         w_beta = one._w_beta * dt
         w_min = one._w_min * dt
+        median = self._median
+        isfinite, hypot = math.isfinite, math.hypot
         for r in self.rows:
             if r.valid:
-                x, y = -r.sp[0], -r.sp[1]
-                if self._median:
+                sp = r.sp
+                x, y = -sp[0], -sp[1]
+                if median:
                     x, y = _median_step(r, x, y)
                 if not r.started:
                     r.xh, r.yh, r.dxh, r.dyh = x, y, 0.0, 0.0
                     r.started = True
                 else:
-                    devx, devy = x - r.xh, y - r.yh
+                    xh, yh = r.xh, r.yh
+                    devx, devy = x - xh, y - yh
                     dx = devx * k_d + c_d * r.dxh
                     dy = devy * k_d + c_d * r.dyh
-                    rr = math.hypot(dx, dy) * w_beta + w_min
+                    rr = hypot(dx, dy) * w_beta + w_min
                     alpha = rr / (rr + 1.0)
-                    nx, ny = devx * alpha + r.xh, devy * alpha + r.yh
-                    if math.isfinite(nx) and math.isfinite(ny):
+                    nx, ny = devx * alpha + xh, devy * alpha + yh
+                    if isfinite(nx) and isfinite(ny):
                         r.xh, r.yh, r.dxh, r.dyh = nx, ny, dx, dy
-            if not r.started:
-                continue
-            ox, oy = r.xh, r.yh
-            norm = math.hypot(ox, oy)
-            r.gx, r.gy = ox, oy
-            if norm >= threshold:
-                s = 1.0 / -norm
-                r.ux, r.uy = ox * s, oy * s
-        for r in self.rows:
-            if not math.isfinite(r.ux):
+            if r.started:
+                ox, oy = r.xh, r.yh
+                norm = hypot(ox, oy)
+                r.gx, r.gy = ox, oy
+                if norm >= threshold:
+                    s = 1.0 / -norm
+                    r.ux, r.uy = ox * s, oy * s
+            if not isfinite(r.ux):
                 r.ux, r.uy = up_default(r.body)
 
     # -- readings -------------------------------------------------------------------------------
