@@ -37,6 +37,7 @@ __all__ = [
     "NULL",
     "ArbiterHandle",
     "Handle",
+    "angle",
     "angular_velocity",
     "arbiter_body_ids",
     "arbiter_callback",
@@ -57,8 +58,10 @@ __all__ = [
     "moment",
     "position",
     "rotation",
+    "set_angular_velocity",
     "set_force",
     "set_torque",
+    "set_velocity",
     "space_handle",
     "torque",
     "velocity",
@@ -74,6 +77,7 @@ _get_position = lib.cpBodyGetPosition
 _get_rotation = lib.cpBodyGetRotation
 _get_force = lib.cpBodyGetForce
 _set_force = lib.cpBodySetForce
+_set_velocity = lib.cpBodySetVelocity
 _get_user_data = lib.cpBodyGetUserData
 _get_cog = lib.cpBodyGetCenterOfGravity
 _local_to_world = lib.cpBodyLocalToWorld
@@ -84,6 +88,11 @@ _get_bodies = lib.cpArbiterGetBodies
 _cast = ffi.cast
 _new = ffi.new
 
+angle: Callable[[Handle], float] = lib.cpBodyGetAngle
+"""``angle(h)``: the body's angle, rad."""
+set_angular_velocity: Callable[[Handle, float], None] = lib.cpBodySetAngularVelocity
+"""``set_angular_velocity(h, w)``: set the body's angular velocity, rad/s (wakes it, as
+``body.angular_velocity = ...`` does)."""
 get_velocity: Callable[[Handle], Any] = lib.cpBodyGetVelocity
 """``get_velocity(h)``: the body's velocity as Chipmunk's ``cpVect`` (read ``.x`` and ``.y`` at
 once, m/s): :func:`velocity` without building a tuple, for the hottest loops."""
@@ -156,6 +165,11 @@ def force(h: Handle) -> tuple[float, float]:
     """The force set on the body for the coming step, N."""
     f = _get_force(h)
     return f.x, f.y
+
+
+def set_velocity(h: Handle, vx: float, vy: float) -> None:
+    """Set the body's velocity, m/s (wakes it, as ``body.velocity = ...`` does)."""
+    _set_velocity(h, (vx, vy))
 
 
 def set_force(h: Handle, fx: float, fy: float) -> None:

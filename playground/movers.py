@@ -19,6 +19,7 @@ from typing import Literal, Protocol, runtime_checkable
 
 import pymunk
 
+from playground import _raw
 from playground._validate import positive
 from playground.fields import check, param
 from playground.limits import (
@@ -249,13 +250,14 @@ class Mover:
     2.0
     """
 
-    __slots__ = ("body", "path")
+    __slots__ = ("_h", "body", "path")
 
     def __init__(self, body: pymunk.Body, path: Path) -> None:
         if body.body_type != pymunk.Body.KINEMATIC:
             raise ValueError("body: a mover drives a KINEMATIC body (got a dynamic or static one)")
         self.body = body
         self.path = path
+        self._h = _raw.handle(body)  # driven every step: through the C getters and setters
 
     def place(self, t: float) -> None:
         """Put the body at its pose at time ``t``: only before the first step (setup).
@@ -273,9 +275,10 @@ class Mover:
     def drive(self, t: float, dt: float) -> None:
         """Set the velocity that brings the body from its pose now to the path's pose at t + dt."""
         (x, y), a = self.path.pose(t + dt)
-        p = self.body.position
-        self.body.velocity = ((x - p.x) / dt, (y - p.y) / dt)
-        self.body.angular_velocity = (a - self.body.angle) / dt
+        h = self._h
+        px, py = _raw.position(h)
+        _raw.set_velocity(h, (x - px) / dt, (y - py) / dt)
+        _raw.set_angular_velocity(h, (a - _raw.angle(h)) / dt)
 
 
 def ring_room(

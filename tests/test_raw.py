@@ -191,3 +191,20 @@ def test_vector_structs_equal_the_properties_bit_for_bit(
     body = _stepped_body(vx, vy, w, angle, fx, fy)
     v, f = _raw.get_velocity(_raw.handle(body)), _raw.get_force(_raw.handle(body))
     assert _bits((v.x, v.y, f.x, f.y)) == _bits((*body.velocity, *body.force))
+
+
+@given(_FINITE, _FINITE, _FINITE, _FINITE)
+def test_mover_reads_and_writes_equal_the_properties_bit_for_bit(
+    vx: float, vy: float, w: float, angle: float
+) -> None:
+    raw = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    prop = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    raw.angle = prop.angle = angle
+    h = _raw.handle(raw)
+    _raw.set_velocity(h, vx, vy)
+    _raw.set_angular_velocity(h, w)
+    prop.velocity = (vx, vy)
+    prop.angular_velocity = w
+    assert _bits((*raw.velocity, raw.angular_velocity, _raw.angle(h))) == _bits(
+        (*prop.velocity, prop.angular_velocity, prop.angle)
+    )

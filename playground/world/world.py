@@ -386,8 +386,9 @@ class World(ForceAPI):
         self._lap_start = time.perf_counter()
 
     def _drive_movers(self) -> None:
+        t, dt = self.time, self._config.dt
         for mover in self._movers:
-            mover.drive(self.time, self.config.dt)
+            mover.drive(t, dt)
 
     def _guard_all(self) -> None:
         """Stop if any body's position, angle or velocity is not finite or runs away."""
