@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground.controller.states import State
+from playground.controller.states import HANGING, OFF_BALANCE
 from playground.intents import Intent
 from playground.world.world import World
 
@@ -36,7 +36,7 @@ def update_grip(self: Controller, world: World, it: Intent) -> None:
         elif it.climb != 0.0:
             self._climb(world, joint, it.climb)
         return
-    if not it.grab or self.state is State.OFF_BALANCE:
+    if not it.grab or self.state is OFF_BALANCE:
         return
     ax, ay = self.axis
     p = self.body.position
@@ -55,7 +55,7 @@ def update_grip(self: Controller, world: World, it: Intent) -> None:
     world.add_constraint(joint)
     self.joint = joint
     self._held_shape = info.shape
-    self.state = State.HANGING
+    self.state = HANGING
 
 
 def climb(self: Controller, world: World, joint: pymunk.PivotJoint, climb: float) -> None:

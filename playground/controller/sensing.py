@@ -15,7 +15,7 @@ import pymunk
 
 from playground import _raw
 from playground.controller._vec import ZERO, unit_or
-from playground.controller.states import State
+from playground.controller.states import CRUSHED, GROUNDED, HANGING
 from playground.vec import Vec
 from playground.world.world import World
 
@@ -86,7 +86,7 @@ def sense(self: Controller, world: World) -> Vec:
     self._m = _raw.mass(h)
     gx, gy = self._gravity(world)
 
-    supported = self.state in (State.GROUNDED, State.HANGING, State.CRUSHED)
+    supported = self.state in (GROUNDED, HANGING, CRUSHED)
     if supported:
         ux, uy = world.perceived_up(self.name)
         if not (math.isfinite(ux) and math.isfinite(uy)):
@@ -113,11 +113,11 @@ def gravity(self: Controller, world: World) -> Vec:
     applied in plain floats (the numpy path costs ~0.2 ms a call for one body)."""
     if not world.gravity.uniform:
         return world.gravity_at(self.name)
-    g = world.space.gravity
+    gx, gy = _raw.gravity(_raw.space_handle(world.space))
     rule = world.gravity_rule(self.name)
     if rule.direction is None:
-        return (rule.scale * g.x, rule.scale * g.y)
-    mag = rule.scale * math.hypot(g.x, g.y)
+        return (rule.scale * gx, rule.scale * gy)
+    mag = rule.scale * math.hypot(gx, gy)
     return (mag * rule.direction[0], mag * rule.direction[1])
 
 
