@@ -96,8 +96,11 @@ class PerceivedGravity:
         specific: NDArray[np.float64],
         valid: NDArray[np.bool_],
         dt: float,
+        *,
+        all_valid: bool | None = None,
     ) -> None:
-        """Feed this step's specific force (m/s², rows); invalid rows hold.
+        """Feed this step's specific force (m/s², rows); invalid rows hold. ``all_valid``: whether
+        every row of ``valid`` is true, if the caller knows (saves looking).
 
         Rows that have not yet felt a strong enough reading keep a NaN up; the caller supplies
         one (the world uses the gravity field at the body).
@@ -106,19 +109,22 @@ class PerceivedGravity:
             raise ValueError(
                 f"specific: expected {self._rows} rows (call resize first), got {len(specific)}"
             )
-        all_valid = bool(valid.all())
+        if all_valid is None:
+            all_valid = bool(valid.all())
         sample = -specific if all_valid else np.where(valid[:, None], -specific, np.nan)
         out = np.ascontiguousarray(self._filter.filter(sample, dt), dtype=np.float64).reshape(-1, 2)
         # Rows as complex numbers x + iy: magnitude and direction in whole contiguous operations
         # (an (N, 2) slice costs numpy several times more).
         z = out.view(np.complex128).ravel()
         norm = np.abs(z)
-        strong = norm >= self.config.up_threshold  # False for NaN rows
-        if all_valid and bool(strong.all()):
+        threshold = self.config.up_threshold
+        # Every row strong (the smallest norm at the threshold; NaN fails it): one pass.
+        if all_valid and (len(norm) == 0 or norm.min() >= threshold):
             self.gravity = out
             self.up = (z / -norm).view(np.float64).reshape(-1, 2)
             self.up_complete = True
             return
+        strong = norm >= threshold  # False for NaN rows
         finite = np.isfinite(norm)
         if finite.all():
             self.gravity = out

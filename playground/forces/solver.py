@@ -225,8 +225,9 @@ class ForceSolver(TrackedRows):
         damping: float,
         space_gravity: Vec,
         ledger: ForceLedger,
-    ) -> None:
-        """Compute the readings of this step.
+    ) -> bool:
+        """Compute the readings of this step; return whether every row has one (:attr:`valid`
+        all true).
 
         With n substeps of h = dt/n and per-substep velocity damping d = damping**h, summing the
         per-substep impulses telescopes to
@@ -271,7 +272,8 @@ class ForceSolver(TrackedRows):
         specific *= self._inv_m2
 
         ok = self._seen
-        if not (self._all_seen or ok.all()):
+        all_valid = self._all_seen or bool(ok.all())
+        if not all_valid:
             # Rows without a reading keep their last values.
             stale = ~ok
             for new, old in (
@@ -292,6 +294,7 @@ class ForceSolver(TrackedRows):
             if self._split.valid.any():
                 self._split.forget()
             self._split_known = False
+        return all_valid
 
     def _xy_index(self) -> NDArray[np.intp]:
         """Flat indices (N, 2) of the x, y columns of (N, 3) rows, cached while N stays."""

@@ -67,6 +67,7 @@ class PhysicsStage:
         self.scalar_on = False
         self._scalar_synced = True
         self._rows = BodyRows()
+        self._all_valid: bool | None = None  # from the last batch solve, for the filter after it
         # space.step calls outside the bare path (which runs only with nothing tracked): the
         # solver's substep stamps.
         self._space_steps = 0
@@ -288,11 +289,11 @@ class PhysicsStage:
                 substeps=cfg.substeps,
             )
             return
-        self.solver.finish(
+        self._all_valid = self.solver.finish(
             dt=cfg.dt,
             substeps=cfg.substeps,
             damping=cfg.damping,
-            space_gravity=(self.space.gravity.x, self.space.gravity.y),
+            space_gravity=_raw.gravity(self._space_h),
             ledger=self.ledger,
         )
 
@@ -302,7 +303,9 @@ class PhysicsStage:
         if self.scalar_on:
             self.scalar.filter(dt, self.perceived.config.up_threshold, self._up_at)
             return
-        self.perceived.update(self.solver.specific, self.solver.valid, dt)
+        # Whether every row has a reading, as the FORCES stage of this step found (None: look).
+        all_valid, self._all_valid = self._all_valid, None
+        self.perceived.update(self.solver.specific, self.solver.valid, dt, all_valid=all_valid)
         if self.perceived.up_complete:
             return
         # Until a body has felt anything, its up is against the gravity field at it.
