@@ -25,6 +25,7 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
+from playground import _raw
 from playground._batch import lookup
 from playground.forces.ledger import Category, ForceLedger
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
@@ -59,6 +60,7 @@ class GravityStage:
         replan: Callable[[], None],
     ) -> None:
         self.space = space
+        self._space_h = _raw.space_handle(space)
         self._bodies = bodies
         self._names = names
         self.ledger = ledger
@@ -179,7 +181,7 @@ class GravityStage:
         if self._registry_dirty:
             self._refresh_registry()
         g_space = self.space_gravity(t)
-        if self.space.gravity != g_space:
+        if _raw.gravity(self._space_h) != g_space:
             self.space.gravity = g_space  # setting it wakes every body: only when it changes
         if self.field.uniform:
             # Only bodies with their own rule need a correction force: m·(g_rule − g_space), in
