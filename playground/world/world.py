@@ -57,6 +57,10 @@ from playground.world.schedule import (
 
 __all__ = ["World"]
 
+# The stages bound to names once: reading a member off an Enum class costs ~80 ns on CPython 3.11
+# (a plain global ~20 ns), and the step names one per stage it runs.
+INPUTS, EVENTS, GRAVITY, MOVERS, CONTROL, PHYSICS, FORCES, FILTER, OBSERVE = Stage
+
 _NEVER = 2**62
 """A step number no run reaches: the guard's next check when the guard is off."""
 
@@ -303,12 +307,12 @@ class World(ForceAPI):
         # 1. inputs: scripts and keyboards turn into intents
         if schedule.inputs:
             run_hooks(schedule.inputs, self)
-            lap(Stage.INPUTS)
+            lap(INPUTS)
         # 2. events: scheduled scene changes
         events = schedule.events
         if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
             schedule.run_events(self)
-            lap(Stage.EVENTS)
+            lap(EVENTS)
         # From here to the step's end the world is locked: what a hook adds or removes waits for
         # the end, so every stage of this step sees the same bodies.
         self._locked = True
@@ -317,30 +321,29 @@ class World(ForceAPI):
             field = None
             if gravity.active:
                 field = gravity.apply(self.time)
-                lap(Stage.GRAVITY)
+                lap(GRAVITY)
             # 4. movers: kinematic bodies get the velocity that reaches their next pose
             if self._movers:
                 self._drive_movers()
-                lap(Stage.MOVERS)
+                lap(MOVERS)
             # 5. control: controllers sense and put their forces in the ledger
             if schedule.controls:
                 run_hooks(schedule.controls, self)
-                lap(Stage.CONTROL)
+                lap(CONTROL)
             # 6. physics: flush forces, step the space (re-applying forces every substep)
             physics.step(field)
-            lap(Stage.PHYSICS)
+            lap(PHYSICS)
             # 7. forces: reverse integration for tracked bodies
             if physics.solver.bodies:
                 physics.solve()
-                lap(Stage.FORCES)
+                lap(FORCES)
             # 8. filter: perceived gravity for the bodies that perceive
             if physics.perceivers:
                 physics.filter()
-                lap(Stage.FILTER)
-            if len(self.ledger):
-                self.ledger.clear()
-                # The forces are spent: a step with nothing else to do is bare again.
-                self._bare = self._idle
+                lap(FILTER)
+            # The forces are spent: a step with nothing else to do is bare again.
+            self.ledger.clear()
+            self._bare = self._idle
             self.steps += 1
             # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
             self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
@@ -355,7 +358,7 @@ class World(ForceAPI):
             if schedule.observers:
                 lap(None)  # the bookkeeping above is no stage's
                 run_hooks(schedule.observers, self)
-                lap(Stage.OBSERVE)
+                lap(OBSERVE)
         finally:
             self._locked = False
         if self._pending:
