@@ -94,9 +94,9 @@ class ForceLedger:
         entry.fx += fx
         entry.fy += fy
         if point is not None:
-            c = body.local_to_world(body.center_of_gravity)
-            entry.torque += (point[0] - c.x) * fy - (point[1] - c.y) * fx
-        i = 2 * category.value
+            cx, cy = _raw.centre_of_gravity(entry.h)
+            entry.torque += (point[0] - cx) * fy - (point[1] - cy) * fx
+        i = 2 * category._value_  # _value_, not value: a plain attribute, not a ~80 ns property
         entry.parts[i] += fx
         entry.parts[i + 1] += fy
 
@@ -118,7 +118,7 @@ class ForceLedger:
         for x, y, category in forces:
             fx += x
             fy += y
-            i = 2 * category.value
+            i = 2 * category._value_
             parts[i] += x
             parts[i + 1] += y
         entry.fx = fx
