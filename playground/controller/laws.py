@@ -172,7 +172,7 @@ def hover(self: Controller, world: World, hit: GroundHit, gx: float, gy: float, 
     spring = hover_spring(k, c, m, target - height, v_n, wc.dt, wc.substeps)
     f = min(cfg.hover_force, max(0.0, weight + spring))
     if f > 0.0:
-        react(world, hit.body, f * nx, f * ny, hit.point)
+        react(world, hit, f * nx, f * ny)
     return f
 
 
@@ -213,7 +213,7 @@ def drive(
     if f == 0.0:
         return ZERO
     fx, fy = f * tx, f * ty
-    react(world, hit.body, fx, fy, hit.point)
+    react(world, hit, fx, fy)
     return (fx, fy)
 
 
@@ -253,7 +253,7 @@ def balance(
         self._saturated += dt
     else:
         self._saturated = 0.0
-    if hit is not None and _raw.body_type(ground) == pymunk.Body.DYNAMIC:
+    if hit is not None and hit.dynamic:
         world.apply_torque(hit.body, -torque, category=SUPPORT)
     return torque
 
@@ -316,11 +316,11 @@ def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
     return (-f * nx, -f * ny)
 
 
-def react(world: World, ground: pymunk.Body, fx: float, fy: float, point: Vec) -> None:
-    """Newton's third law for hover and drive: −(fx, fy) (N) on the ground at ``point`` (m), a
+def react(world: World, hit: GroundHit, fx: float, fy: float) -> None:
+    """Newton's third law for hover and drive: −(fx, fy) (N) on the ground at the hit point, a
     SUPPORT force (it stands in for a contact). Only a dynamic ground takes it: the world drops
     forces on static and kinematic bodies, so for those the call would only repeat the check of
     a force of the magnitude ours has just passed (and of a hit point within the probe's reach).
     """
-    if _raw.body_type(_raw.handle(ground)) == pymunk.Body.DYNAMIC:
-        world.apply_force(ground, (-fx, -fy), point=point, category=SUPPORT)
+    if hit.dynamic:
+        world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=SUPPORT)

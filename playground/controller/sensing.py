@@ -62,6 +62,8 @@ class GroundHit:
             acceleration is left to the drive's feedback. Gravity minus ``frame_acceleration``
             is the gravity *felt* in the ground's frame: inside a spinning ring, ω²·r outward;
             in a lift accelerating up at a, g + a.
+        dynamic: the body hit is dynamic, so it takes our reactions (the world drops forces on
+            static and kinematic bodies).
     """
 
     body: pymunk.Body
@@ -71,6 +73,7 @@ class GroundHit:
     walkable: bool
     frame_velocity: Vec
     frame_acceleration: Vec
+    dynamic: bool
 
 
 def sense(self: Controller, world: World) -> Vec:
@@ -141,8 +144,9 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
     dt = world.config.dt
     gh = _raw.handle(ground)
+    kind = _raw.body_type(gh)
     turn = _raw.angular_velocity(gh) * dt
-    if turn == 0.0 and _raw.body_type(gh) != pymunk.Body.KINEMATIC:
+    if turn == 0.0 and kind != pymunk.Body.KINEMATIC:
         # Not turning: the chord below is exactly 0.0 for any d (cos 0 = 1, sin 0 = ±0), and
         # only a kinematic ground's own acceleration needs d: skip reading its centre (~1 µs).
         cos_t, sin_t = 1.0, 0.0
@@ -166,6 +170,7 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
             (cos_t * rx - sin_t * ry - rx) / dt + own_x,
             (sin_t * rx + cos_t * ry - ry) / dt + own_y,
         ),
+        dynamic=kind == pymunk.Body.DYNAMIC,
     )
 
 

@@ -13,6 +13,7 @@ import math
 
 import pymunk
 
+from playground import _raw
 from playground._validate import bounded, bounded_vec
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.readings import BodyForces
@@ -105,7 +106,7 @@ class ForceAPI(BodyRegistry):
             t_limit = RUNAWAY_FORCE * MAX_COORDINATE if guard else math.inf
             if not -t_limit <= torque <= t_limit:
                 bounded("torque", torque, t_limit, "N·m")
-        if body.body_type == pymunk.Body.DYNAMIC:
+        if _raw.body_type(_raw.handle(body)) == pymunk.Body.DYNAMIC:
             self.ledger.add_all(self._own(body), forces, torque)
 
     def apply_torque(

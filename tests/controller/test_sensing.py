@@ -109,3 +109,22 @@ def test_carried_without_drift(axis: tuple[float, float], a: float) -> None:
     bound = JERK_MARGIN * a * world.config.dt * player.config.drive_time
     assert drift <= bound, f"drifted {drift * 1e3:.2f} mm (bound {bound * 1e3:.2f} mm)"
     assert bound < 0.01 and math.isfinite(drift)
+
+
+@pytest.mark.parametrize(
+    ("kind", "dynamic"),
+    [(pymunk.Body.DYNAMIC, True), (pymunk.Body.KINEMATIC, False), (pymunk.Body.STATIC, False)],
+    ids=["dynamic", "kinematic", "static"],
+)
+def test_the_probe_says_whether_the_ground_takes_reactions(kind: int, dynamic: bool) -> None:
+    """Law: the hit is ``dynamic`` exactly over a dynamic body, the only kind the world puts a
+    reaction on."""
+    world = World()
+    world.add_static_segment((-5.0, -0.5), (5.0, -0.5), radius=0.0)
+    slab = pymunk.Body(200.0, 1e4, body_type=kind)
+    slab.position = (0.0, -0.25)
+    world.add("slab", slab, pymunk.Poly.create_box(slab, (4.0, 0.5)))
+    player = Controller(world, "player", position=(0.0, 1.0))
+    world.run(0.5)
+    assert player.probe is not None and player.probe.body is slab
+    assert player.probe.dynamic is dynamic
