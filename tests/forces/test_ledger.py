@@ -134,3 +134,25 @@ def test_parts_of_a_body_are_its_items_and_none_without_forces() -> None:
     assert ledger.parts(bodies[0]) == by_id[bodies[0].id] == [0.0, 0.0, 0.0, 0.0, 1.0, 2.0]
     assert ledger.parts(bodies[2]) == by_id[bodies[2].id] == [-3.0, 0.5, 0.25, 4.0, 0.0, 0.0]
     assert ledger.parts(bodies[1]) is None
+
+
+def test_a_cleared_ledger_starts_from_nothing_for_the_same_bodies() -> None:
+    """Law: after ``clear`` a body's forces, torque and per-category sums start again from zero
+    (the ledger reuses its entries for the bodies of the last step), and the first new entry
+    calls ``on_first`` again."""
+    calls: list[int] = []
+    body, other = pymunk.Body(2.0, 1.0), pymunk.Body(1.0, 1.0)
+    ledger = ForceLedger(on_first=lambda: calls.append(1))
+    ledger.add(body, (5.0, -1.0), point=(0.0, 1.0), category=Category.SUPPORT)
+    ledger.add(other, (1.0, 1.0), category=Category.PASSIVE)
+    ledger.clear()
+    ledger.add(body, (0.5, 2.0), category=Category.APPLIED)
+    ledger.add_torque(body, 0.25, Category.APPLIED)
+    fresh = ForceLedger()
+    fresh.add(body, (0.5, 2.0), category=Category.APPLIED)
+    fresh.add_torque(body, 0.25, Category.APPLIED)
+    assert ledger.items() == fresh.items() == [(body.id, [0.0, 0.0, 0.5, 2.0, 0.0, 0.0])]
+    ledger.flush()
+    assert (body.force, body.torque) == ((0.5, 2.0), 0.25)
+    assert ledger.parts(other) is None
+    assert calls == [1, 1]
