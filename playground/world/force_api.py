@@ -10,6 +10,7 @@ serves the tracked bodies.
 from __future__ import annotations
 
 import math
+import sys
 
 import pymunk
 
@@ -26,6 +27,23 @@ from playground.world.physics import PhysicsStage
 from playground.world.registry import BodyRegistry
 
 __all__ = ["ForceAPI"]
+
+_LARGEST = sys.float_info.max
+"""The bound of the quick checks when the guard is off: any finite number (∞ fails
+``x <= _LARGEST``, NaN every comparison)."""
+_RUNAWAY_TORQUE = RUNAWAY_FORCE * MAX_COORDINATE
+"""A torque is a force times a lever of at most the world's size: the same runaway bound, N·m."""
+
+
+def _plain_within(v: object, limit: float) -> bool:
+    """Whether ``v`` is a pair of floats within ±``limit`` (NaN fails the comparisons): the
+    common case, checked in a few comparisons. Anything else (ints, numpy numbers, a wrong
+    length, a value out of bounds) goes to the full check, which accepts it or names what is
+    wrong, so this changes only the cost, never what is accepted."""
+    if type(v) is not tuple or len(v) != 2:
+        return False
+    x, y = v
+    return type(x) is float and type(y) is float and -limit <= x <= limit and -limit <= y <= limit
 
 
 class ForceAPI(BodyRegistry):
@@ -77,10 +95,12 @@ class ForceAPI(BodyRegistry):
     ) -> None:
         """Apply ``force`` (N, world frame) at world ``point`` (m) during the coming step."""
         b = self._own(body)
-        bounded_vec("force", force, RUNAWAY_FORCE if self._config.guard else math.inf, "N")
-        if point is not None:
+        guard = self._config.guard
+        if not _plain_within(force, RUNAWAY_FORCE if guard else _LARGEST):
+            bounded_vec("force", force, RUNAWAY_FORCE if guard else math.inf, "N")
+        if point is not None and not _plain_within(point, MAX_COORDINATE):
             bounded_vec("point", point, MAX_COORDINATE, "m")
-        if b.body_type == pymunk.Body.DYNAMIC:
+        if _raw.body_type(_raw.handle(b)) == pymunk.Body.DYNAMIC:
             # The ledger's first entry replans the step (its on_first).
             self.ledger.add(b, force, point=point, category=category)
 
@@ -96,16 +116,16 @@ class ForceAPI(BodyRegistry):
         totals are those of one :meth:`apply_force` call each, in order, then one
         :meth:`apply_torque`, bit for bit."""
         guard = self._config.guard
-        limit = RUNAWAY_FORCE if guard else math.inf
+        cap = RUNAWAY_FORCE if guard else _LARGEST
         for fx, fy, _ in forces:
-            # Within ±limit, NaN refused by the comparisons themselves.
-            if not (-limit <= fx <= limit and -limit <= fy <= limit):
-                bounded_vec("force", (fx, fy), limit, "N")
+            # Within ±cap (finite), NaN refused by the comparisons themselves.
+            if not (-cap <= fx <= cap and -cap <= fy <= cap):
+                bounded_vec("force", (fx, fy), RUNAWAY_FORCE if guard else math.inf, "N")
         if torque is not None:
             # A torque is a force times a lever of at most the world's size (apply_torque).
-            t_limit = RUNAWAY_FORCE * MAX_COORDINATE if guard else math.inf
-            if not -t_limit <= torque <= t_limit:
-                bounded("torque", torque, t_limit, "N·m")
+            t_cap = _RUNAWAY_TORQUE if guard else _LARGEST
+            if not -t_cap <= torque <= t_cap:
+                bounded("torque", torque, _RUNAWAY_TORQUE if guard else math.inf, "N·m")
         if _raw.body_type(_raw.handle(body)) == pymunk.Body.DYNAMIC:
             self.ledger.add_all(self._own(body), forces, torque)
 
@@ -114,10 +134,11 @@ class ForceAPI(BodyRegistry):
     ) -> None:
         """Apply a pure ``torque`` (N·m, counter-clockwise) during the coming step."""
         b = self._own(body)
-        # A torque is a force times a lever of at most the world's size: the same runaway bound.
-        limit = RUNAWAY_FORCE * MAX_COORDINATE if self._config.guard else math.inf
-        bounded("torque", torque, limit, "N·m")
-        if b.body_type == pymunk.Body.DYNAMIC:
+        guard = self._config.guard
+        cap = _RUNAWAY_TORQUE if guard else _LARGEST
+        if not (type(torque) is float and -cap <= torque <= cap):
+            bounded("torque", torque, _RUNAWAY_TORQUE if guard else math.inf, "N·m")
+        if _raw.body_type(_raw.handle(b)) == pymunk.Body.DYNAMIC:
             self.ledger.add_torque(b, torque, category)
 
     def apply_impulse(

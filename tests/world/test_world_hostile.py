@@ -314,6 +314,17 @@ def test_guard_off_accepts_any_finite_force() -> None:
     """With the guard off (watching a blow-up on purpose) only finiteness is checked."""
     world = World(WorldConfig(guard=False))
     world.add_box("b", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.0))
+    body = world.body("b")
     world.apply_force("b", (1e300, 0.0))
-    with pytest.raises(ValueError, match=r"^force\[0\]: expected a finite number"):
-        world.apply_force("b", (INF, 0.0))
+    world.apply_forces(body, [(-1e300, 1e300, Category.SUPPORT)], 1e300)
+    world.apply_torque("b", -1e300)
+    refused = [
+        (lambda: world.apply_force("b", (INF, 0.0)), r"force\[0\]"),
+        (lambda: world.apply_force("b", (0.0, 1.0), point=(0.0, NAN)), r"point\[1\]"),
+        (lambda: world.apply_forces(body, [(0.0, -INF, Category.SUPPORT)]), r"force\[1\]"),
+        (lambda: world.apply_forces(body, [], INF), "torque"),
+        (lambda: world.apply_torque("b", NAN), "torque"),
+    ]
+    for call, name in refused:
+        with pytest.raises(ValueError, match=rf"^{name}: expected a finite number"):
+            call()
