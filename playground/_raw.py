@@ -46,6 +46,8 @@ __all__ = [
     "body_id",
     "body_type",
     "centre_of_gravity",
+    "collision_persistence",
+    "current_time_step",
     "each_arbiter",
     "force",
     "get_force",
@@ -108,6 +110,12 @@ moment: Callable[[Handle], float] = lib.cpBodyGetMoment
 """``moment(h)``: the body's moment of inertia, kg·m²."""
 body_type: Callable[[Handle], int] = lib.cpBodyGetType
 """``body_type(h)``: ``pymunk.Body.DYNAMIC``, ``KINEMATIC`` or ``STATIC`` (ints)."""
+current_time_step: Callable[[Handle], float] = lib.cpSpaceGetCurrentTimeStep
+"""``current_time_step(s)``: the length of the space's last step (``space.current_time_step``), s,
+of a space handle (:func:`space_handle`)."""
+collision_persistence: Callable[[Handle], int] = lib.cpSpaceGetCollisionPersistence
+"""``collision_persistence(s)``: steps an arbiter outlives its contact
+(``space.collision_persistence``), of a space handle."""
 is_sleeping: Callable[[Handle], int] = lib.cpBodyIsSleeping
 """``is_sleeping(h)``: non-zero if the body sleeps (``body.is_sleeping``)."""
 set_torque: Callable[[Handle, float], None] = lib.cpBodySetTorque

@@ -208,3 +208,13 @@ def test_mover_reads_and_writes_equal_the_properties_bit_for_bit(
     assert _bits((*raw.velocity, raw.angular_velocity, _raw.angle(h))) == _bits(
         (*prop.velocity, prop.angular_velocity, prop.angle)
     )
+
+
+@given(st.floats(1e-4, 1.0), st.integers(0, 10))
+def test_space_step_and_persistence_are_the_properties(dt: float, persistence: int) -> None:
+    space = pymunk.Space()
+    space.collision_persistence = persistence
+    space.step(dt)
+    s = _raw.space_handle(space)
+    assert _bits((_raw.current_time_step(s),)) == _bits((space.current_time_step,))
+    assert _raw.collision_persistence(s) == space.collision_persistence == persistence

@@ -74,7 +74,7 @@ class ContactSums:
         ``stamp`` counts the space's steps (1 for its first); ``rescaled``: this substep's length
         differs from the one before it.
         """
-        persistence = int(space.collision_persistence)
+        persistence = _raw.collision_persistence(_raw.space_handle(space))
         pairs = self._pairs = persistence >= 2
         found: list[tuple[Row, list[Flags]]] = []
         keys: set[int] = set()

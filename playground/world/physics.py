@@ -243,7 +243,7 @@ class PhysicsStage:
                     body.force = held_force
                     body.torque = held_torque
             # Chipmunk rescales warm starts by h / (its last step) when the length changes.
-            rescaled = split and space.current_time_step != h
+            rescaled = split and _raw.current_time_step(self._space_h) != h
             space.step(h)
             self._space_steps += 1
             scalar.after_substep(space, last=k == n - 1, stamp=self._space_steps, rescaled=rescaled)
