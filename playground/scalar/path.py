@@ -80,12 +80,16 @@ class ScalarPath:
         self._field = False
         self._summed = 0
         self._contacts = ContactSums()
+        # Whether a row may hold contact split readings (rows loaded, or split this step): only
+        # then does a step without the split look for them to clear.
+        self._split_held = False
 
     # -- hand-off with the vectorised path ----------------------------------------------------
 
     def load(self, solver: ForceSolver, perceived: PerceivedGravity) -> None:
         """Take over the state of the vectorised path (at a plan change, not per step)."""
         self.rows, self._one_euro, self._median, history = handoff.load(solver, perceived)
+        self._split_held = True
         self._contacts.history = history
         self.refresh_masses()
 
@@ -228,10 +232,13 @@ class ScalarPath:
             r.valid = True
         if self.contact_split:
             _split(self.rows, dt)
-        elif any(r.split for r in self.rows):  # the split was just turned off
-            for r in self.rows:
-                r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
-                r.split = False
+            self._split_held = True
+        elif self._split_held:  # the split was just turned off: no row keeps its readings
+            if any(r.split for r in self.rows):
+                for r in self.rows:
+                    r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
+                    r.split = False
+            self._split_held = False
 
     def filter(self, dt: float, threshold: float, up_default: Callable[[pymunk.Body], Vec]) -> None:
         """Perceived gravity: −specific force through median-of-3 and 1€, and the up, held while

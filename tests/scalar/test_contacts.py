@@ -3,6 +3,7 @@ path's bit for bit, and a step whose split may be wrong is unknown on both."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import random
 
@@ -92,3 +93,36 @@ def test_a_rescaled_warm_start_is_unknown_on_both_paths() -> None:
     for world in worlds:
         world.step()
     assert [w.forces("plank").split_valid for w in worlds] == [True, True]
+
+
+def _split_turned_off(world: World, scalar_max: int) -> tuple[bool, tuple[float, float]]:
+    """Run with the split on, then one step with it off and ``scalar_max`` as the world's
+    scalar_max_bodies: the box's split_valid and contact."""
+    world.run(0.25)
+    assert world.forces("box").split_valid
+    world.scalar_max_bodies = scalar_max
+    world.config = dataclasses.replace(world.config, contact_split=False)
+    world.step()
+    f = world.forces("box")
+    return f.split_valid, f.contact
+
+
+def test_turning_the_split_off_clears_its_readings_on_both_paths() -> None:
+    """Law: the step after the contact split is turned off, a body has no split reading (not
+    valid, contact NaN) on the scalar path as on the vectorised one."""
+    results = []
+    for most in (10**6, 0):
+        world = _plank_on_balls(most, 0, 1)
+        results.append(_split_turned_off(world, most))
+        assert world.on_scalar_path == (most > 0)
+    for valid, contact in results:
+        assert not valid and all(math.isnan(c) for c in contact)
+
+
+def test_split_readings_handed_to_the_scalar_path_with_the_split_off_are_cleared() -> None:
+    """Law: when the world moves to the scalar path at the moment the split is turned off, the
+    split readings the vectorised path held are cleared on the first scalar step."""
+    world = _plank_on_balls(0, 0, 1)
+    valid, contact = _split_turned_off(world, 10**6)
+    assert world.on_scalar_path
+    assert not valid and all(math.isnan(c) for c in contact)
