@@ -42,6 +42,7 @@ tracked and perceived, a step on the scalar path costs 0.13× the vectorised one
 at 16 and 1.1× at 24 (``playground bench overhead`` measures it again: docs/performance.md)."""
 
 _NAN = math.nan
+_hypot = math.hypot
 FieldOnBodies = Mapping[pymunk.Body, Vec]
 """A field's force (N) on each body it acts on this step."""
 
@@ -351,11 +352,13 @@ def _median_step(r: Row, x: float, y: float) -> tuple[float, float]:
         r.s0 = r.s1 = r.s2 = (x, y)
         r.m_started = True
         return x, y
-    r.s0, r.s1, r.s2 = r.s1, r.s2, (x, y)
-    a, b, c = r.s0, r.s1, r.s2
-    d_ab = math.hypot(a[0] - b[0], a[1] - b[1])
-    d_bc = math.hypot(b[0] - c[0], b[1] - c[1])
-    d_ac = math.hypot(a[0] - c[0], a[1] - c[1])
+    a, b, c = r.s1, r.s2, (x, y)
+    r.s0, r.s1, r.s2 = a, b, c
+    ax, ay = a
+    bx, by = b
+    d_ab = _hypot(ax - bx, ay - by)
+    d_bc = _hypot(bx - x, by - y)
+    d_ac = _hypot(ax - x, ay - y)
     if d_ac >= d_ab and d_ac >= d_bc:
         return b
     if d_bc >= d_ab:
