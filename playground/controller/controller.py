@@ -152,6 +152,9 @@ class Controller:
         # until the physics stage), and each read from pymunk builds a new Vec2d.
         self._px = self._py = self._vx = self._vy = 0.0
         self._m = config.mass
+        # The world's settings (dt, substeps), read once a step with the body's state:
+        # World.config is a property, and the step's parts would read it five times.
+        self._world_config = world.config
 
         self.removed = False
         self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self._control)]

@@ -76,7 +76,7 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
     it = self.intent
     self._gravity_actions(world, it)
     cfg = self.config
-    dt = world.config.dt
+    dt = self._world_config.dt
     t = world.time
     hit = self.probe
     ux, uy = self.up
@@ -164,7 +164,7 @@ def hover(self: Controller, world: World, hit: GroundHit, gx: float, gy: float, 
         # gravity) finds that body at its flank, a few tenths of a metre away, and the spring
         # kicks off it at its budget.
         return 0.0
-    wc = world.config
+    wc = self._world_config
     # hover_stiffness and hover_damping_coefficient, from the one mass read above.
     omega = self._omega
     k = m * omega * omega
@@ -279,7 +279,7 @@ def jump(
         # The reaction, as _react's: a static or kinematic ground takes no impulse.
         world.apply_impulse(ground.body, (-jx, -jy), point=ground.point, category=SUPPORT)
     self._rising = True
-    dt = world.config.dt
+    dt = self._world_config.dt
     return (jx / dt, jy / dt)
 
 

@@ -77,8 +77,8 @@ class GroundHit:
 
 
 def sense(self: Controller, world: World) -> Vec:
-    """Read the body (position, velocity, mass), the gravity at it, up, the ground under it
-    (:attr:`~Controller.probe`) and the load on it; return the gravity, m/s².
+    """Read the body (position, velocity, mass), the world's settings, the gravity at it, up, the
+    ground under it (:attr:`~Controller.probe`) and the load on it; return the gravity, m/s².
 
     Up is the perceived one while supported and the field while airborne (it sees where it will
     land), fallen or getting up (contacts while lying and rising shake the inner ear).
@@ -87,6 +87,7 @@ def sense(self: Controller, world: World) -> Vec:
     self._px, self._py = _raw.position(h)
     self._vx, self._vy = _raw.velocity(h)
     self._m = _raw.mass(h)
+    self._world_config = world.config
     gx, gy = self._gravity(world)
 
     supported = self.state in (GROUNDED, HANGING, CRUSHED)
@@ -142,7 +143,7 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     # V + (R(θ) − 1)·d/dt (d from the ground's centre of gravity), not the tangent ω × d,
     # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
     # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
-    dt = world.config.dt
+    dt = self._world_config.dt
     gh = _raw.handle(ground)
     kind = _raw.body_type(gh)
     turn = _raw.angular_velocity(gh) * dt
@@ -202,8 +203,8 @@ def ground_acceleration(
 def contact_load(self: Controller, world: World, ux: float, uy: float) -> float:
     """Force pressing on us along −up through contacts in the last step, N (the floor's push
     along +up does not count): each contact's impulse over the last substep's length."""
-    cfg = world.config
-    return self._contacts.load(ux, uy, cfg.dt / cfg.substeps)
+    wc = self._world_config
+    return self._contacts.load(ux, uy, wc.dt / wc.substeps)
 
 
 def touching(self: Controller) -> bool:
