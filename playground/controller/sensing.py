@@ -22,6 +22,10 @@ from playground.world.world import World
 if TYPE_CHECKING:
     from playground.controller.controller import Controller
 
+# Body types read once (``pymunk.Body.X`` is two attribute lookups, three times a step).
+KINEMATIC = pymunk.Body.KINEMATIC
+DYNAMIC = pymunk.Body.DYNAMIC
+
 __all__ = [
     "GroundHit",
     "contact_load",
@@ -144,10 +148,13 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
     # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
     dt = self._world_config.dt
+    # The ground's type, velocity and spin, read once here for the frame and its own
+    # acceleration both.
     gh = _raw.handle(ground)
     kind = _raw.body_type(gh)
-    turn = _raw.angular_velocity(gh) * dt
-    if turn == 0.0 and kind != pymunk.Body.KINEMATIC:
+    w = _raw.angular_velocity(gh)
+    turn = w * dt
+    if turn == 0.0 and kind != KINEMATIC:
         # Not turning: the chord below is exactly 0.0 for any d (cos 0 = 1, sin 0 = ±0), and
         # only a kinematic ground's own acceleration needs d: skip reading its centre (~1 µs).
         cos_t, sin_t = 1.0, 0.0
@@ -159,7 +166,7 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
         rx = (cos_t * dx - sin_t * dy - dx) / dt
         ry = (sin_t * dx + cos_t * dy - dy) / dt
     vx, vy = _raw.velocity(gh)
-    own_x, own_y = self._ground_acceleration(ground, dx, dy, dt)
+    own_x, own_y = self._ground_acceleration(ground, kind == KINEMATIC, vx, vy, w, dx, dy, dt)
     return GroundHit(
         body=ground,
         point=(hx, hy),
@@ -171,27 +178,33 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
             (cos_t * rx - sin_t * ry - rx) / dt + own_x,
             (sin_t * rx + cos_t * ry - ry) / dt + own_y,
         ),
-        dynamic=kind == pymunk.Body.DYNAMIC,
+        dynamic=kind == DYNAMIC,
     )
 
 
 def ground_acceleration(
-    self: Controller, ground: pymunk.Body, dx: float, dy: float, dt: float
+    self: Controller,
+    ground: pymunk.Body,
+    kinematic: bool,
+    vx: float,
+    vy: float,
+    w: float,
+    dx: float,
+    dy: float,
+    dt: float,
 ) -> Vec:
     """The ground's own acceleration at our centre, A + α × d (m/s², d from its centre of
-    gravity, m), read from how its velocity and spin changed since the last step (dt, s).
+    gravity, m), from how its velocity (vx, vy), m/s, and spin w, rad/s, as the probe has just
+    read them, changed since the last step (dt, s).
 
     Fed forward, it lets the drive and the hover keep up with an accelerating platform
     instead of lagging a·drive_time behind it (5 cm over a second at 1 m/s²). Only for a
     kinematic ground (zero otherwise, and on the first step over a new ground): a dynamic
     ground's change of velocity is partly our own reaction on it.
     """
-    h = _raw.handle(ground)
-    if _raw.body_type(h) != pymunk.Body.KINEMATIC:
+    if not kinematic:
         self._ground_motion = None
         return ZERO
-    vx, vy = _raw.velocity(h)
-    w = _raw.angular_velocity(h)
     prev = self._ground_motion
     self._ground_motion = (ground, vx, vy, w)
     if prev is None or prev[0] is not ground:
