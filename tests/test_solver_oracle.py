@@ -284,6 +284,9 @@ def test_scalar_and_vector_paths_give_one_answer(kind: str, seed: int) -> None:
                 assert _close((a.engine_torque, 0.0), (b.engine_torque, 0.0)), name
                 assert _close(ref.perceived_gravity(name), world.perceived_gravity(name)), name
                 assert _close(ref.perceived_up(name), world.perceived_up(name)), name
+                for w in (ref, world):
+                    both = (w.perceived_up(name), w.perceived_gravity(name))
+                    assert w.perceived_up_and_gravity(name) == both, name
                 assert a.split_valid == b.split_valid, name
                 for field in ("contact", "contact_normal", "contact_friction", "constraint"):
                     assert _same(getattr(a, field), getattr(b, field)), (name, field)

@@ -96,10 +96,10 @@ def sense(self: Controller, world: World) -> Vec:
 
     supported = self.state in (GROUNDED, HANGING, CRUSHED)
     if supported:
-        ux, uy = world.perceived_up(self.name)
+        (ux, uy), perceived = world.perceived_up_and_gravity(self.name)
         if not (math.isfinite(ux) and math.isfinite(uy)):
             ux, uy = unit_or(-gx, -gy, self.up)
-        elif math.hypot(*world.perceived_gravity(self.name)) < self._up_threshold:
+        elif math.hypot(*perceived) < self._up_threshold:
             # Just caught after a free fall: the inner ear still holds the up from before the
             # fall (after a gravity flip, the opposite one) until the new support has built
             # up a reading: keep the up we fell with meanwhile.

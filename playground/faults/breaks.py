@@ -27,6 +27,7 @@ from playground.faults.patching import (
 )
 from playground.forces.ledger import Category
 from playground.gravity import GravityRule
+from playground.vec import Vec
 from playground.world import force_api, gravity_stage
 from playground.world import world as world_mod
 
@@ -208,9 +209,17 @@ def _perceived_gravity_rotated() -> Iterator[None]:
     def turned(original: Callable[..., tuple[float, float]]) -> Callable[..., tuple[float, float]]:
         return lambda self, name: rotate(original(self, name), PERCEIVED_ROTATION)
 
+    def both_turned(original: Callable[..., tuple[Vec, Vec]]) -> Callable[..., tuple[Vec, Vec]]:
+        def read(self: Any, name: str) -> tuple[Vec, Vec]:
+            up, gravity = original(self, name)
+            return rotate(up, PERCEIVED_ROTATION), rotate(gravity, PERCEIVED_ROTATION)
+
+        return read
+
     with (
         replaced(force_api.ForceAPI, "perceived_gravity", turned),
         replaced(force_api.ForceAPI, "perceived_up", turned),
+        replaced(force_api.ForceAPI, "perceived_up_and_gravity", both_turned),
     ):
         yield
 

@@ -177,6 +177,18 @@ class ForceAPI(BodyRegistry):
         u = physics.perceived.up[self._tracked_row(name)]
         return (float(u[0]), float(u[1]))
 
+    def perceived_up_and_gravity(self, name: str) -> tuple[Vec, Vec]:
+        """:meth:`perceived_up` and :meth:`perceived_gravity` of a tracked body in one call (a
+        controller reads both every step; the row is looked up once)."""
+        physics = self._physics
+        row = self._tracked_row(name)
+        if physics.scalar_on:
+            scalar = physics.scalar
+            return scalar.up(row), scalar.gravity(row)
+        u = physics.perceived.up[row]
+        g = physics.perceived.gravity[row]
+        return (float(u[0]), float(u[1])), (float(g[0]), float(g[1]))
+
     def _tracked_row(self, name: str) -> int:
         row = self._physics.solver.row_of(self.body(name), self._ids[name])
         if row is None:
