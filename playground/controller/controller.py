@@ -155,6 +155,13 @@ class Controller:
         # The world's settings (dt, substeps), read once a step with the body's state:
         # World.config is a property, and the step's parts would read it five times.
         self._world_config = world.config
+        # The world's cpSpace* (its space is made with it and never replaced), and the field's
+        # uniformity and our gravity rule as of World.gravity_version: they change only through
+        # the world's setters, and sense reads them again when that count has moved.
+        self._space_h = _raw.space_handle(world.space)
+        self._gravity_version = -1
+        self._uniform_field = True
+        self._gravity_rule = world.gravity_rule(name)
 
         self.removed = False
         self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self._control)]

@@ -118,11 +118,18 @@ def sense(self: Controller, world: World) -> Vec:
 def gravity(self: Controller, world: World) -> Vec:
     """The gravity at the body, m/s²: ``world.gravity_at`` in general, and for a field uniform
     in space the value the GRAVITY stage has just put in ``space.gravity`` with the body's rule
-    applied in plain floats (the numpy path costs ~0.2 ms a call for one body)."""
-    if not world.gravity.uniform:
+    applied in plain floats (the numpy path costs ~0.2 ms a call for one body). Whether the
+    field is uniform and the body's rule are read again only when the world says they changed
+    (:attr:`World.gravity_version`)."""
+    version = world.gravity_version
+    if version != self._gravity_version:
+        self._gravity_version = version
+        self._uniform_field = world.gravity.uniform
+        self._gravity_rule = world.gravity_rule(self.name)
+    if not self._uniform_field:
         return world.gravity_at(self.name)
-    gx, gy = _raw.gravity(_raw.space_handle(world.space))
-    rule = world.gravity_rule(self.name)
+    gx, gy = _raw.gravity(self._space_h)
+    rule = self._gravity_rule
     if rule.direction is None:
         return (rule.scale * gx, rule.scale * gy)
     mag = rule.scale * math.hypot(gx, gy)

@@ -70,6 +70,8 @@ class GravityStage:
         self._replan = replan
         self.field: GravityField = Uniform()
         self._rules: dict[int, GravityRule] = {}
+        self.version = 0
+        """Counts the changes of the field and of the rules (see :attr:`World.gravity_version`)."""
         self.active = False
         """Whether the stage runs: a field that is not constant, or bodies with their own rule."""
         self._t = 0.0  # s: the time of the last apply, for forces_at
@@ -98,6 +100,7 @@ class GravityStage:
     def set_field(self, field: GravityField, t: float) -> None:
         """Use ``field`` from time ``t`` (s) on."""
         self.field = field
+        self.version += 1
         self._point = point_field(field)
         self._plain = None
         self.space.gravity = self.space_gravity(t)
@@ -121,6 +124,7 @@ class GravityStage:
             self._rules.pop(body_id, None)
         else:
             self._rules[body_id] = rule
+        self.version += 1
         self._registry_dirty = True
         self._update_active()
 
@@ -153,6 +157,7 @@ class GravityStage:
     def forget(self, body_id: int) -> None:
         """The body left the world: drop its rule."""
         self._rules.pop(body_id, None)
+        self.version += 1
         self._registry_dirty = True
         self._update_active()
 

@@ -204,6 +204,13 @@ class World(ForceAPI):
             value = Uniform((float(value[0]), float(value[1])))
         self._gravity.set_field(value, self.time)
 
+    @property
+    def gravity_version(self) -> int:
+        """A count that changes whenever the field or a body's rule does: a caller keeping
+        :attr:`gravity` or a :meth:`gravity_rule` between steps reads them again when it has
+        changed (a controller reads its rule every step otherwise)."""
+        return self._gravity.version
+
     def set_gravity_rule(self, name: str, rule: GravityRule | None) -> None:
         """Give one body its own gravity: a scale (0 nullifies it) or its own direction.
 

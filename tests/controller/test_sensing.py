@@ -14,6 +14,7 @@ import pymunk
 import pytest
 
 from playground import Controller, ControllerConfig, Elevator, State, World
+from playground.gravity import GravityRule, Radial
 from playground.movers import Spin, ring_room
 
 M = ControllerConfig().mass
@@ -128,3 +129,24 @@ def test_the_probe_says_whether_the_ground_takes_reactions(kind: int, dynamic: b
     world.run(0.5)
     assert player.probe is not None and player.probe.body is slab
     assert player.probe.dynamic is dynamic
+
+
+def test_the_sensed_gravity_follows_every_change_of_the_field_and_the_rule() -> None:
+    """Law: the gravity a controller senses (it keeps its rule and whether the field is uniform
+    between steps) is the world's ``gravity_at`` after each change made between steps: its own
+    rule set and cleared, a uniform field replaced by a planet and by another uniform field."""
+    world = World()
+    player = Controller(world, "p", (0.0, 50.0))
+    changes = [
+        lambda: world.set_gravity_rule("p", GravityRule(scale=0.5, direction=(1.0, 0.0))),
+        lambda: setattr(world, "gravity", Radial(center=(30.0, 50.0), radius=30.0)),
+        lambda: world.set_gravity_rule("p", None),
+        lambda: setattr(world, "gravity", (0.0, 4.0)),
+    ]
+    versions = {world.gravity_version}
+    for change in changes:
+        change()
+        versions.add(world.gravity_version)
+        world.step()
+        assert player._gravity(world) == world.gravity_at("p")
+    assert len(versions) == len(changes) + 1
