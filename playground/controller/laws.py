@@ -243,8 +243,7 @@ def balance(
     wb = self._wb
     # Damp the spin relative to the ground's, so the body turns with a turning floor (inside
     # a spinning ring) instead of lagging behind it.
-    ground = _raw.handle(hit.body) if hit is not None else None
-    spin = _raw.angular_velocity(h) - (_raw.angular_velocity(ground) if ground is not None else 0.0)
+    spin = _raw.angular_velocity(h) - (hit.spin if hit is not None else 0.0)
     need = _raw.moment(h) * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
     budget = cfg.balance_torque
     torque = max(-budget, min(budget, need))

@@ -66,6 +66,8 @@ class GroundHit:
             acceleration is left to the drive's feedback. Gravity minus ``frame_acceleration``
             is the gravity *felt* in the ground's frame: inside a spinning ring, ω²·r outward;
             in a lift accelerating up at a, g + a.
+        spin: the body hit's angular velocity, rad/s (counter-clockwise): the balance damps
+            our spin relative to it.
         dynamic: the body hit is dynamic, so it takes our reactions (the world drops forces on
             static and kinematic bodies).
     """
@@ -77,6 +79,7 @@ class GroundHit:
     walkable: bool
     frame_velocity: Vec
     frame_acceleration: Vec
+    spin: float
     dynamic: bool
 
 
@@ -155,8 +158,8 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
     # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
     dt = self._world_config.dt
-    # The ground's type, velocity and spin, read once here for the frame and its own
-    # acceleration both.
+    # The ground's type, velocity and spin, read once here for the frame, its own acceleration
+    # and the balance.
     gh = _raw.handle(ground)
     kind = _raw.body_type(gh)
     w = _raw.angular_velocity(gh)
@@ -185,6 +188,7 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
             (cos_t * rx - sin_t * ry - rx) / dt + own_x,
             (sin_t * rx + cos_t * ry - ry) / dt + own_y,
         ),
+        spin=w,
         dynamic=kind == DYNAMIC,
     )
 

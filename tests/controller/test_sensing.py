@@ -131,6 +131,20 @@ def test_the_probe_says_whether_the_ground_takes_reactions(kind: int, dynamic: b
     assert player.probe.dynamic is dynamic
 
 
+def test_the_probe_reads_the_spin_of_a_turning_ground() -> None:
+    """Law: the hit's ``spin`` is the ground's angular velocity (the balance damps ours relative
+    to it), here a slab turning slowly under the player."""
+    world = World()
+    slab = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    slab.position = (0.0, -0.25)
+    slab.angular_velocity = 0.2
+    world.add("slab", slab, pymunk.Poly.create_box(slab, (4.0, 0.5)))
+    player = Controller(world, "player", position=(0.0, 1.0))
+    world.run(0.5)
+    assert player.probe is not None and player.probe.body is slab
+    assert player.probe.spin == slab.angular_velocity
+
+
 def test_the_sensed_gravity_follows_every_change_of_the_field_and_the_rule() -> None:
     """Law: the gravity a controller senses (it keeps its rule and whether the field is uniform
     between steps) is the world's ``gravity_at`` after each change made between steps: its own
