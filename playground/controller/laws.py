@@ -44,7 +44,6 @@ __all__ = [
     "hover",
     "jump",
     "push",
-    "react",
     "steer",
 ]
 
@@ -90,10 +89,15 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
         return
 
     # The forces on our own body, in the order they act, and the balance torque, written once at
-    # the end (see World.apply_forces); reactions on other bodies are applied where they arise.
+    # the end (see World.apply_forces); so are their reactions on a dynamic ground (Newton's
+    # third law: hover and drive at the hit point, and the balance torque), SUPPORT forces
+    # because they stand in for a contact. Only a dynamic ground takes them: the world drops
+    # forces on static and kinematic bodies. The push's and the jump's apply where they arise.
     own: list[tuple[float, float, Category]] = []
+    reactions: list[tuple[float, float, Category]] = []
     jumped = False
     grounded = state in (GROUNDED, GETTING_UP, CRUSHED)
+    reacting = grounded and hit is not None and hit.dynamic
     may_jump = state is GROUNDED or (state is AIRBORNE and t - self._grounded_at <= cfg.coyote_time)
     if may_jump and t - self._jump_pressed_at <= cfg.jump_buffer:
         # The take-off step still carries the weight (hover and drive act once more), so the
@@ -109,10 +113,14 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
         hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
         if hover_f > 0.0:
             own.append((hover[0], hover[1], SUPPORT))
+            if reacting:
+                reactions.append((-hover[0], -hover[1], SUPPORT))
         if state is not CRUSHED:
             drive = self._drive(world, hit, it.move, gx, gy, hover_f, dt)
             if drive is not ZERO:
                 own.append((drive[0], drive[1], SUPPORT))
+                if reacting:
+                    reactions.append((-drive[0], -drive[1], SUPPORT))
     elif state is AIRBORNE and it.move != 0.0 and not jumped:
         drive = self._steer(world, it.move, ux, uy, dt)
         if drive is not ZERO:
@@ -125,6 +133,10 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
     balance: float | None = None
     if not cfg.lock_rotation:
         torque = balance = self._balance(world, hit if grounded else None, ux, uy, dt)
+    if reacting and hit is not None:
+        reaction = -balance if balance is not None else None
+        if reactions or reaction is not None:
+            world.apply_forces(hit.body, reactions, reaction, point=hit.point)
     if own or balance is not None:
         world.apply_forces(self.body, own, balance)
 
@@ -136,8 +148,8 @@ def act(self: Controller, world: World, gx: float, gy: float) -> None:
 
 
 def hover(self: Controller, world: World, hit: GroundHit, gx: float, gy: float, t: float) -> float:
-    """The hover spring along the ground normal, within ``hover_force``: apply it and its
-    reaction and return its magnitude, N (the target height rises smoothly while getting up)."""
+    """The hover spring along the ground normal, within ``hover_force``: its magnitude, N (the
+    target height rises smoothly while getting up); :func:`act` applies it and its reaction."""
     cfg = self.config
     target = cfg.ride_height
     if self.state is GETTING_UP:
@@ -170,10 +182,7 @@ def hover(self: Controller, world: World, hit: GroundHit, gx: float, gy: float, 
     k = m * omega * omega
     c = 2.0 * cfg.hover_damping * m * omega
     spring = hover_spring(k, c, m, target - height, v_n, wc.dt, wc.substeps)
-    f = min(cfg.hover_force, max(0.0, weight + spring))
-    if f > 0.0:
-        react(world, hit, f * nx, f * ny)
-    return f
+    return min(cfg.hover_force, max(0.0, weight + spring))
 
 
 def height(self: Controller, hit: GroundHit) -> float:
@@ -192,7 +201,8 @@ def drive(
     dt: float,
 ) -> Vec:
     """Drive along the ground tangent toward ground velocity + ``move``·max_speed, within
-    ``ground_force`` and traction × ``hover`` (N); apply it and its reaction, return it, N."""
+    ``ground_force`` and traction × ``hover`` (N): the force, N; :func:`act` applies it and its
+    reaction."""
     cfg = self.config
     nx, ny = hit.normal
     tx, ty = ny, -nx  # the surface tangent: its normal rotated by −90°
@@ -212,9 +222,7 @@ def drive(
     f = max(-budget, min(budget, self._m * accel))
     if f == 0.0:
         return ZERO
-    fx, fy = f * tx, f * ty
-    react(world, hit, fx, fy)
-    return (fx, fy)
+    return (f * tx, f * ty)
 
 
 def steer(self: Controller, world: World, move: float, ux: float, uy: float, dt: float) -> Vec:
@@ -232,9 +240,9 @@ def steer(self: Controller, world: World, move: float, ux: float, uy: float, dt:
 def balance(
     self: Controller, world: World, hit: GroundHit | None, ux: float, uy: float, dt: float
 ) -> float:
-    """The upright PD torque toward up, within ``balance_torque``: apply its reaction on a
-    dynamic ground and return it, N·m (:func:`act` writes it with our forces). Counts how long
-    the budget falls short."""
+    """The upright PD torque toward up, within ``balance_torque``: the torque, N·m (:func:`act`
+    writes it with our forces, and its reaction on a dynamic ground). Counts how long the budget
+    falls short."""
     cfg = self.config
     h = self._h
     cos_a, sin_a = _raw.rotation(h)
@@ -252,8 +260,6 @@ def balance(
         self._saturated += dt
     else:
         self._saturated = 0.0
-    if hit is not None and hit.dynamic:
-        world.apply_torque(hit.body, -torque, category=SUPPORT)
     return torque
 
 
@@ -275,7 +281,7 @@ def jump(
     jx, jy = m * dv * ux, m * dv * uy
     bounded_vec("impulse", (jx, jy), MAX_IMPULSE, "N·s")
     if ground is not None and ground.body.body_type == pymunk.Body.DYNAMIC:
-        # The reaction, as _react's: a static or kinematic ground takes no impulse.
+        # The reaction, as act's for hover and drive: a static or kinematic ground takes none.
         world.apply_impulse(ground.body, (-jx, -jy), point=ground.point, category=SUPPORT)
     self._rising = True
     dt = self._world_config.dt
@@ -313,13 +319,3 @@ def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
     world.apply_force(best.shape.body, (f * nx, f * ny), point=(cx, cy), category=SUPPORT)
     self.pushed = ((cx, cy), (f * nx, f * ny))
     return (-f * nx, -f * ny)
-
-
-def react(world: World, hit: GroundHit, fx: float, fy: float) -> None:
-    """Newton's third law for hover and drive: −(fx, fy) (N) on the ground at the hit point, a
-    SUPPORT force (it stands in for a contact). Only a dynamic ground takes it: the world drops
-    forces on static and kinematic bodies, so for those the call would only repeat the check of
-    a force of the magnitude ours has just passed (and of a hit point within the probe's reach).
-    """
-    if hit.dynamic:
-        world.apply_force(hit.body, (-fx, -fy), point=hit.point, category=SUPPORT)

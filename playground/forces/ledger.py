@@ -118,12 +118,13 @@ class ForceLedger:
         body: pymunk.Body,
         forces: list[tuple[float, float, Category]],
         torque: float | None = None,
+        point: Vec | None = None,
     ) -> None:
-        """Record several forces (N, world frame, at the centre of gravity) on one body, in order,
-        then a pure ``torque`` (N·m) if given: the same float additions, in the same order, as one
-        :meth:`add` call each and one :meth:`add_torque`, without the per-call cost (a
-        controller's forces on its own body, written once a step). The caller has checked that
-        each is finite."""
+        """Record several forces (N, world frame, at world ``point``, m; default: the centre of
+        gravity) on one body, in order, then a pure ``torque`` (N·m) if given: the same float
+        additions, in the same order, as one :meth:`add` call each and one :meth:`add_torque`,
+        without the per-call cost (a controller's forces on its own body, or their reactions on
+        its ground, written once a step). The caller has checked that each is finite."""
         entry = self._entry(body)
         fx = entry.fx
         fy = entry.fy
@@ -136,6 +137,13 @@ class ForceLedger:
             parts[i + 1] += y
         entry.fx = fx
         entry.fy = fy
+        if point is not None and forces:
+            cx, cy = _raw.centre_of_gravity(entry.h)
+            lx, ly = point[0] - cx, point[1] - cy
+            turn = entry.torque
+            for x, y, _ in forces:
+                turn += lx * y - ly * x
+            entry.torque = turn
         if torque is not None:
             entry.torque += torque
 

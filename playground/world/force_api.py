@@ -109,12 +109,17 @@ class ForceAPI(BodyRegistry):
         body: pymunk.Body,
         forces: list[tuple[float, float, Category]],
         torque: float | None = None,
+        *,
+        point: Vec | None = None,
     ) -> None:
-        """Apply several forces ``(fx, fy, category)`` (N, world frame, at the centre of gravity)
-        and a pure ``torque`` (N·m, counter-clockwise; APPLIED) to one body of this world during
-        the coming step: one call and one check of each, for a controller's own forces; the
-        totals are those of one :meth:`apply_force` call each, in order, then one
-        :meth:`apply_torque`, bit for bit."""
+        """Apply several forces ``(fx, fy, category)`` (N, world frame, at world ``point``, m;
+        default: the centre of gravity) and a pure ``torque`` (N·m, counter-clockwise) to one
+        body of this world during the coming step: one call and one check of each, for a
+        controller's forces on its own body and their reactions on its ground; the totals are
+        those of one :meth:`apply_force` call each, in order, then one :meth:`apply_torque`,
+        bit for bit."""
+        if point is not None and not _plain_within(point, MAX_COORDINATE):
+            bounded_vec("point", point, MAX_COORDINATE, "m")
         guard = self._config.guard
         cap = RUNAWAY_FORCE if guard else _LARGEST
         for fx, fy, _ in forces:
@@ -127,7 +132,7 @@ class ForceAPI(BodyRegistry):
             if not -t_cap <= torque <= t_cap:
                 bounded("torque", torque, _RUNAWAY_TORQUE if guard else math.inf, "N·m")
         if _raw.body_type(_raw.handle(body)) == pymunk.Body.DYNAMIC:
-            self.ledger.add_all(self._own(body), forces, torque)
+            self.ledger.add_all(self._own(body), forces, torque, point)
 
     def apply_torque(
         self, body: pymunk.Body | str, torque: float, *, category: Category = Category.APPLIED

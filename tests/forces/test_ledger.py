@@ -96,7 +96,8 @@ def test_non_finite_forces_and_torques_are_refused(bad: float) -> None:
 def test_add_all_is_one_add_each_in_order_bit_for_bit() -> None:
     """Law: recording forces with one ``add_all`` gives the body's totals and per-category sums
     of one ``add`` call each, in the same order, then one ``add_torque``, to the last bit (a
-    body that already has an entry, with a torque, included)."""
+    body that already has an entry, with a torque, included), the forces at its centre of
+    gravity or all at one point."""
     rng = random.Random(7)
     cats = list(Category)
     for _ in range(200):
@@ -107,15 +108,17 @@ def test_add_all_is_one_add_each_in_order_bit_for_bit() -> None:
         first = (rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0))
         at = (rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))
         torque = rng.choice((None, rng.uniform(-1e3, 1e3)))
+        point = rng.choice((None, (rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0))))
         one, many = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
+        one.position = many.position = (0.3, -0.7)
         a, b = ForceLedger(), ForceLedger()
         a.add(one, first, point=at)
         b.add(many, first, point=at)
         for fx, fy, cat in forces:
-            a.add(one, (fx, fy), category=cat)
+            a.add(one, (fx, fy), point=point, category=cat)
         if torque is not None:
             a.add_torque(one, torque, Category.APPLIED)
-        b.add_all(many, forces, torque)
+        b.add_all(many, forces, torque, point)
         a.flush()
         b.flush()
         assert (one.force.x, one.force.y, one.torque) == (many.force.x, many.force.y, many.torque)

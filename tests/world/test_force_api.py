@@ -13,6 +13,7 @@ import pytest
 from playground import Category, Stage, World, WorldConfig
 from playground.controller import Controller
 from playground.forces import ForceLedger
+from playground.vec import Vec
 
 TOL_REL = 1e-9
 """Relative: 120 steps of a constant force integrated by pymunk, float rounding only."""
@@ -110,22 +111,31 @@ def test_the_controller_applies_its_torques_through_the_world(
         apply_torque(self, body, torque, category=category)
 
     def spy_world_all(
-        self: World, body: pymunk.Body, forces: _Forces, torque: float | None = None
+        self: World,
+        body: pymunk.Body,
+        forces: _Forces,
+        torque: float | None = None,
+        *,
+        point: Vec | None = None,
     ) -> None:
         if torque is not None:
             through_world.append((body, torque))
-        apply_forces(self, body, forces, torque)
+        apply_forces(self, body, forces, torque, point=point)
 
     def spy_ledger(self: ForceLedger, body: pymunk.Body, torque: float, category: Category) -> None:
         into_ledger.append((body, torque))
         add_torque(self, body, torque, category)
 
     def spy_ledger_all(
-        self: ForceLedger, body: pymunk.Body, forces: _Forces, torque: float | None = None
+        self: ForceLedger,
+        body: pymunk.Body,
+        forces: _Forces,
+        torque: float | None = None,
+        point: Vec | None = None,
     ) -> None:
         if torque is not None:
             into_ledger.append((body, torque))
-        add_all(self, body, forces, torque)
+        add_all(self, body, forces, torque, point)
 
     monkeypatch.setattr(World, "apply_torque", spy_world)
     monkeypatch.setattr(World, "apply_forces", spy_world_all)

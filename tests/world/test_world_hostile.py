@@ -49,6 +49,8 @@ def _world() -> World:
         (lambda w: w.apply_forces(w.body("crate"), [(0.0, NAN, Category.SUPPORT)]), "force"),
         (lambda w: w.apply_forces(w.body("crate"), [(1e300, 0.0, Category.SUPPORT)]), "force"),
         (lambda w: w.apply_forces(w.body("crate"), [], NAN), "torque"),
+        (lambda w: w.apply_forces(w.body("crate"), [], point=(NAN, 0.0)), "point"),
+        (lambda w: w.apply_forces(w.body("crate"), [], point=(0.0, 1e300)), "point"),
         (
             lambda w: w.apply_forces(w.body("crate"), [(1.0, 0.0, Category.SUPPORT)], -1e300),
             "torque",
