@@ -74,7 +74,8 @@ GOALS = (
         "µs",
         "Python calls, not pymunk: the controller reads its body and its ground through "
         "Chipmunk's C getters, probes through one C callback and writes its own forces and "
-        "torque in one checked call, but a step still makes some 55 Python calls and 40 C calls "
+        "torque in one checked call (their reactions on a dynamic ground in one more), but a "
+        "step still makes some 40 Python calls and 40 C calls "
         "(on `rest`, in the running loop: nearly half sensing, the probe about a quarter, "
         "nearly half the force laws and their writes); hover, drive, balance, push and the "
         "gravity switches "
