@@ -292,13 +292,16 @@ def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
     """Push the nearest dynamic body within reach of the head or the chest (not the ground),
     away from us, with the whole push budget; the reaction goes onto us."""
     cfg = self.config
-    p = self.body.position
-    ax, ay = self.axis
+    # The position sensed this step and the capsule's axis (Controller.axis) from the C getter:
+    # the same numbers as body.position and body.rotation_vector, without their Vec2d.
+    px, py = self._px, self._py
+    cos_a, sin_a = _raw.rotation(self._h)
+    ax, ay = -sin_a, cos_a
     half = cfg.half_length
     ground = hit.body if hit is not None else None
     best: pymunk.PointQueryInfo | None = None
-    origin = (p.x, p.y)
-    for qx, qy in ((p.x + ax * half, p.y + ay * half), (p.x, p.y)):
+    origin = (px, py)
+    for qx, qy in ((px + ax * half, py + ay * half), (px, py)):
         for info in world.space.point_query((qx, qy), cfg.radius + cfg.push_reach, self._filter):
             shape = info.shape
             if (
