@@ -58,7 +58,7 @@ __all__ = [
 PILE_SIZES = (10, 100, 1000, 3000)
 """Pile sizes measured by default (the goals quote 10, 1000 and 3000)."""
 
-CROSSOVER_SIZES = (1, 2, 4, 8, 12, 16, 20, 24, 32, 48)
+CROSSOVER_SIZES = (1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 48)
 """Tracked bodies at which the scalar path is timed against the vectorised one."""
 
 FIELD_BODIES = 1000

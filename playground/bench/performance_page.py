@@ -26,7 +26,9 @@ def goals_markdown(goals: Sequence[GoalResult]) -> str:
     """The goals table: measure, goal, measured, met, and by how much and why when missed."""
     rows = []
     for g in goals:
-        verdict = "met" if g.met else f"missed by {g.off_by:.1f}×"
+        # Two decimals near the goal: a miss by 4 % would read "missed by 1.0×".
+        digits = 2 if g.off_by < 1.1 else 1
+        verdict = "met" if g.met else f"missed by {g.off_by:.{digits}f}×"
         rows.append([g.measure, g.goal, g.detail, verdict, g.why])
     return table(["measure", "goal", "measured", "met?", "why it is missed"], rows)
 

@@ -36,10 +36,12 @@ from playground.vec import Vec
 
 __all__ = ["SCALAR_MAX_BODIES", "ScalarPath"]
 
-SCALAR_MAX_BODIES = 20
+SCALAR_MAX_BODIES = 28
 """Most tracked bodies the scalar path serves: the measured crossover. On a pile with every box
-tracked and perceived, a step on the scalar path costs 0.13× the vectorised one at 1 body, 0.85×
-at 16 and 1.1× at 24 (``playground bench overhead`` measures it again: docs/performance.md)."""
+tracked and perceived, a step on the scalar path costs 0.11× the vectorised one at 1 body, 0.67×
+at 16, 0.97× at 28 and 1.07× at 32 (2026-12-01, after both paths were made leaner; it was 20
+when the crossover lay between 16 and 24). ``playground bench overhead`` measures it again:
+docs/performance.md."""
 
 _NAN = math.nan
 _hypot = math.hypot

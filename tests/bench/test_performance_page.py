@@ -11,7 +11,8 @@ import pytest
 
 from playground.bench import performance
 from playground.bench.goals import GOALS
-from playground.bench.performance_page import performance_doc
+from playground.bench.measurement import GoalResult
+from playground.bench.performance_page import goals_markdown, performance_doc
 from playground.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -45,3 +46,12 @@ def test_committed_page_is_generated_from_the_committed_measurement() -> None:
     page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
     assert page == performance_doc(m)
     assert {g.key for g in m.goals} == {g.key for g in GOALS}
+
+
+@pytest.mark.parametrize(
+    ("off_by", "verdict"), [(1.04, "missed by 1.04×"), (2.27, "missed by 2.3×")]
+)
+def test_a_near_miss_says_by_how_much(off_by: float, verdict: str) -> None:
+    """A goal missed by a few per cent does not read "missed by 1.0×"."""
+    goal = GoalResult("k", "a measure", "≤ 1", off_by, "measured", False, off_by, "why")
+    assert f"| {verdict} |" in goals_markdown([goal])
