@@ -19,6 +19,7 @@ import pymunk
 
 from playground import _raw
 from playground._contacts import Contacts
+from playground._reach import Reach
 from playground._sweep import Sweep
 from playground._validate import finite
 from playground.controller import grab, laws, sensing, states, switches
@@ -107,6 +108,7 @@ class Controller:
         shape.filter = pymunk.ShapeFilter(group=group)
         self._filter = pymunk.ShapeFilter(group=group)
         self._sweep = Sweep(world.space, self._filter)
+        self._reach = Reach(world.space, self._filter)
         self.body = body
         # The body's cpBody*: the step reads its state through the C getters (playground._raw).
         self._h = _raw.handle(body)

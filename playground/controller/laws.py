@@ -298,27 +298,20 @@ def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
     cos_a, sin_a = _raw.rotation(self._h)
     ax, ay = -sin_a, cos_a
     half = cfg.half_length
+    reach = cfg.radius + cfg.push_reach
     ground = hit.body if hit is not None else None
-    best: pymunk.PointQueryInfo | None = None
-    origin = (px, py)
-    for qx, qy in ((px + ax * half, py + ay * half), (px, py)):
-        for info in world.space.point_query((qx, qy), cfg.radius + cfg.push_reach, self._filter):
-            shape = info.shape
-            if (
-                shape is None
-                or shape.sensor
-                or shape.body is None
-                or shape.body is ground
-                or shape.body.body_type != pymunk.Body.DYNAMIC
-            ):
-                continue
-            if best is None or info.distance < best.distance:
-                best, origin = info, (qx, qy)
-    if best is None or best.shape is None or best.shape.body is None:
+    qx, qy = px + ax * half, py + ay * half
+    found = self._reach.nearest(qx, qy, reach, ground)
+    # The head is asked first: the chest's find wins only if strictly nearer.
+    chest = self._reach.nearest(px, py, reach, ground, math.inf if found is None else found[3])
+    if chest is not None:
+        found, qx, qy = chest, px, py
+    body = None if found is None else found[0].body
+    if found is None or body is None:
         return ZERO
-    cx, cy = best.point
-    nx, ny = unit_or(cx - origin[0], cy - origin[1], (ax, ay))
+    _, cx, cy, _ = found
+    nx, ny = unit_or(cx - qx, cy - qy, (ax, ay))
     f = cfg.push_force
-    world.apply_force(best.shape.body, (f * nx, f * ny), point=(cx, cy), category=SUPPORT)
+    world.apply_force(body, (f * nx, f * ny), point=(cx, cy), category=SUPPORT)
     self.pushed = ((cx, cy), (f * nx, f * ny))
     return (-f * nx, -f * ny)

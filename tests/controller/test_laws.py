@@ -419,3 +419,28 @@ def test_nullified_enemy_bumping_the_crate_gets_no_hover() -> None:
         touched_crate |= crate in touching(enemy)
     assert touched_crate
     assert max(hovers) == 0.0
+
+
+def _ball(world: World, name: str, position: tuple[float, float]) -> None:
+    """A dynamic ball of radius 0.2 m at ``position`` (m)."""
+    body = pymunk.Body(1.0, 0.02)
+    body.position = position
+    world.add(name, body, pymunk.Circle(body, 0.2))
+
+
+@pytest.mark.parametrize(("chest_gap", "pushed"), [(0.6, "head"), (0.59, "chest")])
+def test_the_push_takes_the_heads_find_unless_the_chest_has_a_strictly_nearer_one(
+    chest_gap: float, pushed: str
+) -> None:
+    """Weightless, upright at the origin, pushing: a ball 0.4 m from the head's point and one
+    0.4 m (then 0.39 m) from the chest's: of equally near finds the head's is pushed (the head's
+    ball is on the right, the chest's on the left)."""
+    world = World(gravity=(0.0, 0.0))
+    player = Controller(world, "player", (0.0, 0.0), source=Script(((0.0, Intent(push=True)),)))
+    half = player.config.half_length
+    _ball(world, "head", (0.6, half))
+    _ball(world, "chest", (-chest_gap, 0.0))
+    world.step()
+    assert player.pushed is not None
+    (x, _), _ = player.pushed
+    assert ("head" if x > 0.0 else "chest") == pushed
