@@ -32,34 +32,30 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk_cffi import ffi, lib
 
+from playground._query import NearestQuery, c_callback, from_handle, is_sensor, shape_data
+
 __all__ = ["Found", "Reach", "nearest_by_pymunk"]
 
 Found = tuple[pymunk.Shape, float, float, float]
 """The shape found, its point nearest the query point (m) and the distance to it (m)."""
 
 _query = lib.cpSpacePointQuery
-_is_sensor = lib.cpShapeGetSensor
 _body_of = lib.cpShapeGetBody
 _body_type = lib.cpBodyGetType
-_shape_data = lib.cpShapeGetUserData
-_from_handle = ffi.from_handle
 _DYNAMIC = lib.CP_BODY_TYPE_DYNAMIC
 
 
 def _keep_nearest(shape: Any, point: Any, distance: float, gradient: Any, data: Any) -> None:
     # best = [distance, shape, px, py, ground]: strictly nearer only, so of equally near hits
     # the first wins (the walk in nearest_by_pymunk).
-    best = _from_handle(data)
-    if distance < best[0] and not _is_sensor(shape):
+    best = from_handle(data)
+    if distance < best[0] and not is_sensor(shape):
         body = _body_of(shape)
         if body != best[4] and _body_type(body) == _DYNAMIC:
             best[:4] = distance, shape, point.x, point.y
 
 
-try:
-    _callback: Any = ffi.callback("cpSpacePointQueryFunc", _keep_nearest)
-except (MemoryError, RuntimeError):  # pragma: no cover - a platform without cffi callbacks
-    _callback = None
+_callback = c_callback("cpSpacePointQueryFunc", _keep_nearest)
 
 
 def nearest_by_pymunk(
@@ -91,19 +87,14 @@ def nearest_by_pymunk(
     return (info.shape, info.point.x, info.point.y, info.distance)
 
 
-class Reach:
+class Reach(NearestQuery):
     """The nearest shape a controller may push within reach of a point of ``space``, among the
     shapes ``shape_filter`` lets through (a controller's filter, fixed: it is converted once)."""
 
-    __slots__ = ("_best", "_data", "_filter", "_filter_c", "_space", "_space_c")
+    __slots__ = ()
 
     def __init__(self, space: pymunk.Space, shape_filter: pymunk.ShapeFilter) -> None:
-        self._space = space
-        self._filter = shape_filter
-        self._space_c = space._space
-        self._filter_c = ffi.new("cpShapeFilter *", shape_filter)
-        self._best: list[Any] = [math.inf, None, 0.0, 0.0, ffi.NULL]
-        self._data = ffi.new_handle(self._best)
+        super().__init__(space, shape_filter, [math.inf, None, 0.0, 0.0, ffi.NULL])
 
     def nearest(
         self, x: float, y: float, reach: float, ground: pymunk.Body | None, within: float = math.inf
@@ -122,4 +113,4 @@ class Reach:
         if shape is None:
             return None
         best[1] = None
-        return (_from_handle(_shape_data(shape)), best[2], best[3], best[0])
+        return (from_handle(shape_data(shape)), best[2], best[3], best[0])

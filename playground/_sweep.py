@@ -30,7 +30,9 @@ import math
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk_cffi import ffi, lib
+from pymunk._chipmunk_cffi import lib
+
+from playground._query import NearestQuery, c_callback, from_handle, is_sensor, shape_data
 
 __all__ = ["Hit", "Sweep", "nearest_by_pymunk"]
 
@@ -38,23 +40,17 @@ Hit = tuple[pymunk.Shape, float, float, float, float]
 """The shape hit, the hit point (m) and the surface normal there (unit)."""
 
 _query = lib.cpSpaceSegmentQuery
-_is_sensor = lib.cpShapeGetSensor
-_shape_data = lib.cpShapeGetUserData
-_from_handle = ffi.from_handle
 
 
 def _keep_nearest(shape: Any, point: Any, normal: Any, alpha: float, data: Any) -> None:
     # best = [alpha, shape, px, py, nx, ny]: strictly nearer only, so of equally near hits the
     # first wins (the walk in nearest_by_pymunk).
-    best = _from_handle(data)
-    if alpha < best[0] and not _is_sensor(shape):
+    best = from_handle(data)
+    if alpha < best[0] and not is_sensor(shape):
         best[:] = alpha, shape, point.x, point.y, normal.x, normal.y
 
 
-try:
-    _callback: Any = ffi.callback("cpSpaceSegmentQueryFunc", _keep_nearest)
-except (MemoryError, RuntimeError):  # pragma: no cover - a platform without cffi callbacks
-    _callback = None
+_callback = c_callback("cpSpaceSegmentQueryFunc", _keep_nearest)
 
 
 def nearest_by_pymunk(
@@ -76,19 +72,14 @@ def nearest_by_pymunk(
     return (info.shape, info.point.x, info.point.y, info.normal.x, info.normal.y)
 
 
-class Sweep:
+class Sweep(NearestQuery):
     """The nearest non-sensor shape a circle swept through ``space`` hits, among the shapes
     ``shape_filter`` lets through (a probe's filter, fixed: it is converted once)."""
 
-    __slots__ = ("_best", "_data", "_filter", "_filter_c", "_space", "_space_c")
+    __slots__ = ()
 
     def __init__(self, space: pymunk.Space, shape_filter: pymunk.ShapeFilter) -> None:
-        self._space = space
-        self._filter = shape_filter
-        self._space_c = space._space
-        self._filter_c = ffi.new("cpShapeFilter *", shape_filter)
-        self._best: list[Any] = [math.inf, None, 0.0, 0.0, 0.0, 0.0]
-        self._data = ffi.new_handle(self._best)
+        super().__init__(space, shape_filter, [math.inf, None, 0.0, 0.0, 0.0, 0.0])
 
     def nearest(self, x0: float, y0: float, x1: float, y1: float, radius: float) -> Hit | None:
         """The shape hit by a circle of ``radius`` (m) swept from (x0, y0) to (x1, y1) (m) that
@@ -103,4 +94,4 @@ class Sweep:
         if shape is None:
             return None
         best[1] = None
-        return (_from_handle(_shape_data(shape)), best[2], best[3], best[4], best[5])
+        return (from_handle(shape_data(shape)), best[2], best[3], best[4], best[5])
