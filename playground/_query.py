@@ -1,7 +1,7 @@
 """Plumbing shared by the nearest-hit queries through Chipmunk (:mod:`playground._sweep`,
 :mod:`playground._reach`): the C side of a query, converted once (the ``cpSpace*``, the shape
-filter, the best-so-far list a C callback fills, and its handle), and the callback itself, or
-None where the platform refuses cffi callbacks (memory both writable and executable).
+filter, the best-so-far list a C callback fills, and its handle). The callbacks themselves are
+made by :func:`playground._raw.c_callback`.
 
 >>> import pymunk
 >>> query = NearestQuery(pymunk.Space(), pymunk.ShapeFilter(), [0.0, None])
@@ -11,26 +11,16 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import pymunk
 from pymunk._chipmunk_cffi import ffi, lib
 
-__all__ = ["NearestQuery", "c_callback", "from_handle", "is_sensor", "shape_data"]
+__all__ = ["NearestQuery", "from_handle", "is_sensor", "shape_data"]
 
 is_sensor = lib.cpShapeGetSensor
 shape_data = lib.cpShapeGetUserData
 from_handle = ffi.from_handle
-_new_callback = ffi.callback
-
-
-def c_callback(c_type: str, keep: Callable[..., None]) -> Any:
-    """A C callback of type ``c_type`` that calls ``keep``; None where cffi cannot make one."""
-    try:
-        return _new_callback(c_type, keep)
-    except (MemoryError, RuntimeError):  # a platform without cffi callbacks (tests/test_query.py)
-        return None
 
 
 class NearestQuery:

@@ -45,6 +45,7 @@ __all__ = [
     "arbiter_impulse",
     "body_id",
     "body_type",
+    "c_callback",
     "centre_of_gravity",
     "collision_persistence",
     "current_time_step",
@@ -88,6 +89,7 @@ _total_impulse = lib.cpArbiterTotalImpulse
 _normal = lib.cpArbiterGetNormal
 _get_bodies = lib.cpArbiterGetBodies
 _cast = ffi.cast
+_new_callback = ffi.callback
 _new = ffi.new
 
 angle: Callable[[Handle], float] = lib.cpBodyGetAngle
@@ -206,9 +208,16 @@ def arbiter_callback(visit: Callable[[Handle, ArbiterHandle, Any], None]) -> Any
     executable): then iterate with ``Body.each_arbiter`` and :func:`arbiter_handle`. Keep it as
     long as it is used. ``visit`` must not raise: an exception in a C callback is printed, not
     raised (read plain values only, as pymunk's own callbacks do)."""
+    return c_callback("void(cpBody *, cpArbiter *, void *)", visit)
+
+
+def c_callback(c_type: str, keep: Callable[..., None]) -> Any:
+    """A C callback of type ``c_type`` that calls ``keep``, or None where the platform refuses
+    cffi callbacks (memory both writable and executable): the callers then fall back to pymunk's
+    own iteration or query."""
     try:
-        return ffi.callback("void(cpBody *, cpArbiter *, void *)", visit)
-    except (MemoryError, RuntimeError):  # pragma: no cover - a platform without cffi callbacks
+        return _new_callback(c_type, keep)
+    except (MemoryError, RuntimeError):  # a platform without cffi callbacks (tests/test_raw.py)
         return None
 
 

@@ -32,7 +32,8 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk_cffi import lib
 
-from playground._query import NearestQuery, c_callback, from_handle, is_sensor, shape_data
+from playground._query import NearestQuery, from_handle, is_sensor, shape_data
+from playground._raw import c_callback
 
 __all__ = ["Hit", "Sweep", "nearest_by_pymunk"]
 

@@ -7,7 +7,8 @@ import math
 import struct
 
 import pymunk
-from hypothesis import given
+import pytest
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from playground import _raw
@@ -38,6 +39,12 @@ def _stepped_body(
     return body
 
 
+UNTIMED = settings(deadline=None)
+"""No per-example deadline: these check values, not speed, and on a shared 2-core machine an
+example can take longer than hypothesis's default 200 ms without anything being wrong."""
+
+
+@UNTIMED
 @given(_FINITE, _FINITE, _FINITE, _FINITE, _FINITE, _FINITE)
 def test_reads_equal_the_properties_bit_for_bit(
     vx: float, vy: float, w: float, angle: float, fx: float, fy: float
@@ -58,6 +65,7 @@ def test_body_id_is_the_property() -> None:
     assert len({_raw.body_id(b) for b in bodies}) == 5
 
 
+@UNTIMED
 @given(_FINITE, _FINITE, _FINITE)
 def test_writes_equal_the_property_writes(fx: float, fy: float, t: float) -> None:
     raw, prop = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
@@ -89,6 +97,7 @@ def test_a_write_wakes_a_sleeping_body_as_the_property_does() -> None:
     assert not body.is_sleeping
 
 
+@UNTIMED
 @given(_FINITE, _FINITE, _FINITE, _FINITE, st.floats(0.01, 1e3), st.floats(0.01, 1e3))
 def test_mass_moment_and_centre_equal_the_properties_bit_for_bit(
     x: float, y: float, cx: float, angle: float, m: float, i: float
@@ -110,6 +119,7 @@ def test_body_type_is_the_property() -> None:
     assert [_raw.body_type(_raw.handle(b)) for b in bodies] == list(kinds)
 
 
+@UNTIMED
 @given(_FINITE, _FINITE)
 def test_space_gravity_is_the_property(gx: float, gy: float) -> None:
     space = pymunk.Space()
@@ -154,6 +164,7 @@ def _through_raw(body: pymunk.Body) -> list[Seen]:
     return seen
 
 
+@UNTIMED
 @given(st.lists(st.tuples(_FINITE, _FINITE), min_size=2, max_size=6))
 def test_arbiter_reads_equal_the_properties_bit_for_bit(spins: list[tuple[float, float]]) -> None:
     """Law: through the C iterator a body's arbiters come in the same order, seen from the same
@@ -184,6 +195,7 @@ def test_arbiter_reads_equal_the_properties_bit_for_bit(spins: list[tuple[float,
     assert arbiters > 0
 
 
+@UNTIMED
 @given(_FINITE, _FINITE, _FINITE, _FINITE, _FINITE, _FINITE)
 def test_vector_structs_equal_the_properties_bit_for_bit(
     vx: float, vy: float, w: float, angle: float, fx: float, fy: float
@@ -193,6 +205,7 @@ def test_vector_structs_equal_the_properties_bit_for_bit(
     assert _bits((v.x, v.y, f.x, f.y)) == _bits((*body.velocity, *body.force))
 
 
+@UNTIMED
 @given(_FINITE, _FINITE, _FINITE, _FINITE)
 def test_mover_reads_and_writes_equal_the_properties_bit_for_bit(
     vx: float, vy: float, w: float, angle: float
@@ -210,6 +223,7 @@ def test_mover_reads_and_writes_equal_the_properties_bit_for_bit(
     )
 
 
+@UNTIMED
 @given(st.floats(1e-4, 1.0), st.integers(0, 10))
 def test_space_step_and_persistence_are_the_properties(dt: float, persistence: int) -> None:
     space = pymunk.Space()
@@ -218,3 +232,26 @@ def test_space_step_and_persistence_are_the_properties(dt: float, persistence: i
     s = _raw.space_handle(space)
     assert _bits((_raw.current_time_step(s),)) == _bits((space.current_time_step,))
     assert _raw.collision_persistence(s) == space.collision_persistence == persistence
+
+
+def _keep(*_: object) -> None:
+    """A callback that keeps nothing."""
+
+
+def test_a_callback_is_made_where_cffi_allows() -> None:
+    assert _raw.c_callback("cpSpacePointQueryFunc", _keep) is not None
+    assert _raw.arbiter_callback(_keep) is not None
+
+
+@pytest.mark.parametrize("refusal", [MemoryError, RuntimeError])
+def test_where_cffi_refuses_callbacks_there_is_none(
+    monkeypatch: pytest.MonkeyPatch, refusal: type[Exception]
+) -> None:
+    """Then the queries and the arbiter readers fall back to pymunk's own iteration."""
+
+    def refuse(*_: object) -> None:
+        raise refusal("write+execute memory refused")
+
+    monkeypatch.setattr(_raw, "_new_callback", refuse)
+    assert _raw.c_callback("cpSpacePointQueryFunc", _keep) is None
+    assert _raw.arbiter_callback(_keep) is None
