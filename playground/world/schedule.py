@@ -13,6 +13,8 @@ True
 
 from __future__ import annotations
 
+import heapq
+import itertools
 from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
@@ -76,7 +78,7 @@ def run_hooks(hooks: list[Hook], world: World) -> None:
 
 
 class Schedule:
-    """The hooks of each hook stage and the pending timed events, in the order they run.
+    """The hooks of each hook stage and the pending timed events (a heap: the next one first).
 
     ``replan`` is called whenever the schedule changes: a step that had nothing to run may now
     have something, and the other way round.
@@ -90,7 +92,11 @@ class Schedule:
         self.event_hooks: list[Hook] = []
         self.controls: list[Hook] = []
         self.observers: list[Hook] = []
+        # A binary heap keyed by (time, scheduling order): the next event is events[0], and
+        # scheduling or running one costs O(log n). The order is a counter that never goes back,
+        # so events at the same time run in the order they were scheduled, whatever ran before.
         self.events: list[tuple[float, int, Hook]] = []
+        self._order = itertools.count()
 
     @staticmethod
     def check(stage: Stage) -> None:
@@ -134,15 +140,14 @@ class Schedule:
         """Run ``event(world)`` once, in the EVENTS stage of the first step starting at or after
         ``t`` (s). Events at the same time run in the order they were scheduled."""
         finite("t", t)
-        self.events.append((t, len(self.events), event))
-        self.events.sort(key=lambda e: (e[0], e[1]))
+        heapq.heappush(self.events, (t, next(self._order), event))
         self._replan()
 
     def run_events(self, world: World) -> None:
         """The EVENTS stage: the events due at the world's time, then the event hooks."""
         events = self.events
         while events and events[0][0] <= world.time + EVENT_EARLY:
-            _, _, event = events.pop(0)
+            _, _, event = heapq.heappop(events)
             event(world)
             self._replan()
         for hook in self.event_hooks:

@@ -51,3 +51,37 @@ def test_hooks_run_only_in_the_four_hook_stages() -> None:
     world = World()
     with pytest.raises(ValueError, match=r"not Stage\.PHYSICS"):
         world.on(Stage.PHYSICS, lambda w: None)
+
+
+def test_same_time_events_keep_their_order_after_earlier_ones_ran() -> None:
+    """Law: events at the same time run in the order they were scheduled, also when they were
+    scheduled after earlier events had already run (the order is a counter that never goes
+    back, not the number of pending events, which shrinks as events run)."""
+    world = World()
+    dt = world.config.dt
+    ran: list[str] = []
+    world.at(dt, lambda w: ran.append("a"))
+    world.at(dt, lambda w: ran.append("b"))
+    world.at(4 * dt, lambda w: ran.append("c"))
+    world.run(3 * dt)
+    world.at(4 * dt, lambda w: ran.append("d"))
+    world.at(4 * dt, lambda w: ran.append("e"))
+    world.run(3 * dt)
+    assert ran == ["a", "b", "c", "d", "e"]
+
+
+def test_events_scheduled_out_of_order_run_in_time_order() -> None:
+    """Law: whatever the order of scheduling, events run by time, then by scheduling order
+    (a heap keyed by both; 1 000 events at 40 distinct times in random order)."""
+    import random
+
+    world = World()
+    dt = world.config.dt
+    rng = random.Random(23)
+    plan = [rng.randrange(40) * dt for _ in range(1000)]
+    ran: list[tuple[float, int]] = []
+    for order, t in enumerate(plan):
+        world.at(t, lambda w, t=t, order=order: ran.append((t, order)))
+    world.run(41 * dt)
+    assert ran == sorted(ran)
+    assert len(ran) == len(plan)
