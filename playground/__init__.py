@@ -11,6 +11,8 @@ from playground.forces.solver import ForceSolver
 from playground.gravity import (
     GravityField,
     GravityRule,
+    PerceivedGravity,
+    Perception,
     Radial,
     RotatingRoom,
     Turn,
@@ -20,7 +22,6 @@ from playground.gravity import (
 )
 from playground.intents import Idle, Intent, IntentSource, Patrol, Script
 from playground.movers import Circle, Elevator, Mover, Sine, Spin, Waypoints, ring_room
-from playground.perception import PerceivedGravity, Perception
 from playground.world.config import WorldConfig
 from playground.world.schedule import Stage, StageTiming
 from playground.world.world import World

@@ -16,8 +16,7 @@ from bisect import bisect_right
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-from playground._validate import finite, unit
-from playground.fields import check, param
+from playground.params import check, finite, param, unit
 
 __all__ = ["Idle", "Intent", "IntentSource", "Patrol", "Script"]
 

@@ -19,9 +19,7 @@ from typing import Literal, Protocol, runtime_checkable
 
 import pymunk
 
-from playground import _raw
-from playground._validate import positive
-from playground.fields import check, param
+from playground._engine import raw
 from playground.limits import (
     MAX_ACCELERATION,
     MAX_ANGLE,
@@ -32,6 +30,7 @@ from playground.limits import (
     MAX_SPEED,
     MAX_TIME,
 )
+from playground.params import check, param, positive
 from playground.vec import Vec
 
 __all__ = ["Circle", "Elevator", "Mover", "Path", "Sine", "Spin", "Waypoints", "ring_room"]
@@ -257,7 +256,7 @@ class Mover:
             raise ValueError("body: a mover drives a KINEMATIC body (got a dynamic or static one)")
         self.body = body
         self.path = path
-        self._h = _raw.handle(body)  # driven every step: through the C getters and setters
+        self._h = raw.handle(body)  # driven every step: through the C getters and setters
 
     def place(self, t: float) -> None:
         """Put the body at its pose at time ``t``: only before the first step (setup).
@@ -276,9 +275,9 @@ class Mover:
         """Set the velocity that brings the body from its pose now to the path's pose at t + dt."""
         (x, y), a = self.path.pose(t + dt)
         h = self._h
-        px, py = _raw.position(h)
-        _raw.set_velocity(h, (x - px) / dt, (y - py) / dt)
-        _raw.set_angular_velocity(h, (a - _raw.angle(h)) / dt)
+        px, py = raw.position(h)
+        raw.set_velocity(h, (x - px) / dt, (y - py) / dt)
+        raw.set_angular_velocity(h, (a - raw.angle(h)) / dt)
 
 
 def ring_room(

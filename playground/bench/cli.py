@@ -17,7 +17,6 @@ import sys
 import time
 from pathlib import Path
 
-from playground._preflight import UsageError, needs, writable
 from playground.bench import guide, overhead, performance, report
 from playground.bench.accuracy import Result, plan, sweep
 from playground.bench.accuracy_figure import accuracy_figure
@@ -26,6 +25,7 @@ from playground.bench.export import to_csv, to_json
 from playground.bench.guide_report import guide_markdown
 from playground.bench.measurement import Measurement
 from playground.bench.performance_page import performance_doc, summary_markdown
+from playground.cli.preflight import UsageError, needs, writable
 
 __all__ = ["configure", "main", "run"]
 

@@ -37,8 +37,7 @@ from playground.bench.blocks import Blocks, interleave
 from playground.bench.goals import judge
 from playground.bench.measurement import STAGES, LevelRow, Measurement, PileRow
 from playground.bench.pile import floor_length, pile_names, pile_space, pile_world
-from playground.gravity import Radial
-from playground.perception import Perception
+from playground.gravity import Perception, Radial
 from playground.world.config import WorldConfig
 from playground.world.schedule import Stage
 from playground.world.world import World

@@ -20,7 +20,7 @@ import threading
 import types
 from collections.abc import Callable, Iterator
 
-from playground._preflight import UsageError
+from playground.cli.preflight import UsageError
 from playground.level.errors import LevelError
 
 __all__ = [

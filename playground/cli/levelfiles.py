@@ -12,8 +12,8 @@ import argparse
 import json
 import sys
 
-from playground._preflight import writable
 from playground.cli.exits import EXIT_FAILED, EXIT_OK
+from playground.cli.preflight import writable
 from playground.level.document import schema
 from playground.level.errors import LevelError
 from playground.level.files import find, shipped

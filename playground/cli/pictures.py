@@ -7,8 +7,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from playground._preflight import writable
 from playground.cli.exits import EXIT_OK, EXIT_USAGE
+from playground.cli.preflight import writable
 
 __all__ = [
     "cmd_figures",

@@ -28,8 +28,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from playground._preflight import UsageError
 from playground.cli.exits import EXIT_FAILED, EXIT_OK, EXIT_USAGE
+from playground.cli.preflight import UsageError
 from playground.guard import RunawayError
 from playground.level.files import find
 from playground.level.loading import load

@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from playground.fields import check, param
 from playground.limits import (
     MAX_ANGULAR_SPEED,
     MAX_FORCE,
@@ -26,6 +25,7 @@ from playground.limits import (
     MAX_SPEED,
     MIN_MASS,
 )
+from playground.params import check, param
 
 __all__ = ["ControllerConfig"]
 

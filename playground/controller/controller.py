@@ -17,11 +17,10 @@ from collections.abc import Callable
 
 import pymunk
 
-from playground import _raw
-from playground._contacts import Contacts
-from playground._reach import Reach
-from playground._sweep import Sweep
-from playground._validate import finite
+from playground._engine import raw
+from playground._engine.contacts import Contacts
+from playground._engine.reach import Reach
+from playground._engine.sweep import Sweep
 from playground.controller import grab, laws, sensing, states, switches
 from playground.controller._vec import unit_or
 from playground.controller.config import ControllerConfig
@@ -30,6 +29,7 @@ from playground.controller.sensing import GroundHit
 from playground.controller.spring import TWO_PI, stable_hover
 from playground.controller.states import State
 from playground.intents import IDLE, Intent, IntentSource
+from playground.params import finite
 from playground.vec import Vec
 from playground.world.schedule import Stage
 from playground.world.world import World
@@ -110,8 +110,9 @@ class Controller:
         self._sweep = Sweep(world.space, self._filter)
         self._reach = Reach(world.space, self._filter)
         self.body = body
-        # The body's cpBody*: the step reads its state through the C getters (playground._raw).
-        self._h = _raw.handle(body)
+        # The body's cpBody*: the step reads its state through the C getters
+        # (playground._engine.raw).
+        self._h = raw.handle(body)
         self._contacts = Contacts(body)
         self.shape = shape
         world.add(name, body, shape)
@@ -160,7 +161,7 @@ class Controller:
         # The world's cpSpace* (its space is made with it and never replaced), and the field's
         # uniformity and our gravity rule as of World.gravity_version: they change only through
         # the world's setters, and sense reads them again when that count has moved.
-        self._space_h = _raw.space_handle(world.space)
+        self._space_h = raw.space_handle(world.space)
         self._gravity_version = -1
         self._uniform_field = True
         self._gravity_rule = world.gravity_rule(name)

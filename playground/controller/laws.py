@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground import _raw
-from playground._validate import bounded_vec
+from playground._engine import raw
 from playground.controller._vec import ZERO, scaled, unit_or
 from playground.controller.spring import hover_spring
 from playground.controller.states import AIRBORNE, CRUSHED, GETTING_UP, GROUNDED, OFF_BALANCE
 from playground.forces.ledger import Category
 from playground.limits import MAX_IMPULSE
+from playground.params import bounded_vec
 from playground.vec import Vec
 from playground.world.world import World
 
@@ -245,14 +245,14 @@ def balance(
     falls short."""
     cfg = self.config
     h = self._h
-    cos_a, sin_a = _raw.rotation(h)
+    cos_a, sin_a = raw.rotation(h)
     ax, ay = -sin_a, cos_a
     err = math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
     wb = self._wb
     # Damp the spin relative to the ground's, so the body turns with a turning floor (inside
     # a spinning ring) instead of lagging behind it.
-    spin = _raw.angular_velocity(h) - (hit.spin if hit is not None else 0.0)
-    need = _raw.moment(h) * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
+    spin = raw.angular_velocity(h) - (hit.spin if hit is not None else 0.0)
+    need = raw.moment(h) * (wb * wb * err - 2.0 * cfg.balance_damping * wb * spin)
     budget = cfg.balance_torque
     torque = max(-budget, min(budget, need))
     touching = hit is not None or self.contact_load > 0.0 or self._touching()
@@ -295,7 +295,7 @@ def push(self: Controller, world: World, hit: GroundHit | None) -> Vec:
     # The position sensed this step and the capsule's axis (Controller.axis) from the C getter:
     # the same numbers as body.position and body.rotation_vector, without their Vec2d.
     px, py = self._px, self._py
-    cos_a, sin_a = _raw.rotation(self._h)
+    cos_a, sin_a = raw.rotation(self._h)
     ax, ay = -sin_a, cos_a
     half = cfg.half_length
     reach = cfg.radius + cfg.push_reach

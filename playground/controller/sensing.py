@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground import _raw
+from playground._engine import raw
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.states import CRUSHED, GROUNDED, HANGING
 from playground.vec import Vec
@@ -91,9 +91,9 @@ def sense(self: Controller, world: World) -> Vec:
     land), fallen or getting up (contacts while lying and rising shake the inner ear).
     """
     h = self._h
-    self._px, self._py = _raw.position(h)
-    self._vx, self._vy = _raw.velocity(h)
-    self._m = _raw.mass(h)
+    self._px, self._py = raw.position(h)
+    self._vx, self._vy = raw.velocity(h)
+    self._m = raw.mass(h)
     self._world_config = world.config
     gx, gy = self._gravity(world)
 
@@ -131,7 +131,7 @@ def gravity(self: Controller, world: World) -> Vec:
         self._gravity_rule = world.gravity_rule(self.name)
     if not self._uniform_field:
         return world.gravity_at(self.name)
-    gx, gy = _raw.gravity(self._space_h)
+    gx, gy = raw.gravity(self._space_h)
     rule = self._gravity_rule
     if rule.direction is None:
         return (rule.scale * gx, rule.scale * gy)
@@ -144,7 +144,7 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     cfg = self.config
     px, py = self._px, self._py
     length = cfg.probe_length
-    # The nearest of every hit (playground._sweep says why not pymunk's segment_query_first).
+    # The nearest of every hit (playground._engine.sweep says why not pymunk's segment_query_first).
     found = self._sweep.nearest(px, py, px - ux * length, py - uy * length, cfg.probe_radius)
     ground = found[0].body if found is not None else None
     if found is None or ground is None:
@@ -160,9 +160,9 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
     dt = self._world_config.dt
     # The ground's type, velocity and spin, read once here for the frame, its own acceleration
     # and the balance.
-    gh = _raw.handle(ground)
-    kind = _raw.body_type(gh)
-    w = _raw.angular_velocity(gh)
+    gh = raw.handle(ground)
+    kind = raw.body_type(gh)
+    w = raw.angular_velocity(gh)
     turn = w * dt
     if turn == 0.0 and kind != KINEMATIC:
         # Not turning: the chord below is exactly 0.0 for any d (cos 0 = 1, sin 0 = ±0), and
@@ -171,11 +171,11 @@ def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | N
         dx = dy = rx = ry = 0.0
     else:
         cos_t, sin_t = math.cos(turn), math.sin(turn)
-        cx, cy = _raw.centre_of_gravity(gh)
+        cx, cy = raw.centre_of_gravity(gh)
         dx, dy = px - cx, py - cy
         rx = (cos_t * dx - sin_t * dy - dx) / dt
         ry = (sin_t * dx + cos_t * dy - dy) / dt
-    vx, vy = _raw.velocity(gh)
+    vx, vy = raw.velocity(gh)
     own_x, own_y = self._ground_acceleration(ground, kind == KINEMATIC, vx, vy, w, dx, dy, dt)
     return GroundHit(
         body=ground,

@@ -14,7 +14,6 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from playground import movers as movers_mod
-from playground import perception as perception_mod
 from playground.controller.controller import Controller
 from playground.faults.catalog import register
 from playground.faults.patching import (
@@ -27,6 +26,7 @@ from playground.faults.patching import (
 )
 from playground.forces.ledger import Category
 from playground.gravity import GravityRule
+from playground.gravity import perception as perception_mod
 from playground.vec import Vec
 from playground.world import force_api, gravity_stage
 from playground.world import world as world_mod

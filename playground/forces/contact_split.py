@@ -15,7 +15,7 @@ import pymunk
 import pymunk.batch as batch
 from numpy.typing import NDArray
 
-from playground._batch import lookup, read_arbiters
+from playground._engine.batch import lookup, read_arbiters
 
 __all__ = ["ContactSplit"]
 

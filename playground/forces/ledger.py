@@ -13,7 +13,7 @@ from enum import Enum
 
 import pymunk
 
-from playground import _raw
+from playground._engine import raw
 from playground.vec import Vec
 
 __all__ = ["Category", "ForceLedger"]
@@ -41,7 +41,7 @@ class _Entry:
 
     def __init__(self, body: pymunk.Body) -> None:
         self.body = body
-        self.h = _raw.handle(body)  # written through the C setters the properties call
+        self.h = raw.handle(body)  # written through the C setters the properties call
         self.fx = 0.0
         self.fy = 0.0
         self.torque = 0.0
@@ -107,7 +107,7 @@ class ForceLedger:
         entry.fx += fx
         entry.fy += fy
         if point is not None:
-            cx, cy = _raw.centre_of_gravity(entry.h)
+            cx, cy = raw.centre_of_gravity(entry.h)
             entry.torque += (point[0] - cx) * fy - (point[1] - cy) * fx
         i = 2 * category._value_  # _value_, not value: a plain attribute, not a ~80 ns property
         entry.parts[i] += fx
@@ -138,7 +138,7 @@ class ForceLedger:
         entry.fx = fx
         entry.fy = fy
         if point is not None and forces:
-            cx, cy = _raw.centre_of_gravity(entry.h)
+            cx, cy = raw.centre_of_gravity(entry.h)
             lx, ly = point[0] - cx, point[1] - cy
             turn = entry.torque
             for x, y, _ in forces:
@@ -155,7 +155,7 @@ class ForceLedger:
 
     def flush(self) -> None:
         """Write each body's total force and torque (replacing what it had)."""
-        set_force, set_torque = _raw.set_force, _raw.set_torque
+        set_force, set_torque = raw.set_force, raw.set_torque
         for e in self._entries.values():
             set_force(e.h, e.fx, e.fy)
             set_torque(e.h, e.torque)

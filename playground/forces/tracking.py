@@ -21,7 +21,7 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
-from playground._batch import lookup
+from playground._engine.batch import lookup
 
 __all__ = ["TrackedRows"]
 

@@ -1,7 +1,7 @@
 """Tables derived from the core's configs: one declaration of each field, read by the level format.
 
 A table that names a core dataclass in ``__core__`` gets one key per declared field of it
-(:func:`playground.fields.param`): the field's type made strict, its bounds, its doc as the
+(:func:`playground.params.param`): the field's type made strict, its bounds, its doc as the
 description and its unit in the schema (``"unit"``), its default. The class body adds the keys
 only a level has (a ``kind`` tag, an input's time) and may restate a key whose core type the
 format cannot write (a gravity field stands for a tagged table). Once its keys are valid, the
@@ -28,8 +28,8 @@ from pydantic import AfterValidator, BaseModel, Field, Strict, model_validator
 from pydantic._internal._model_construction import ModelMetaclass
 from pydantic.config import JsonDict
 
-from playground.fields import SPEC, Spec
 from playground.level.values import PLAIN, Name, Table, Whole
+from playground.params import SPEC, Spec
 
 __all__ = ["Derived", "to_core"]
 

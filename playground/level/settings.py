@@ -6,7 +6,8 @@ from typing import Literal
 
 from pydantic import Field
 
-from playground import limits, perception
+from playground import limits
+from playground.gravity import perception
 from playground.level.derive import Derived
 from playground.level.values import Name, NonNegative, Positive, Table, Vec
 from playground.world.config import WorldConfig

@@ -7,8 +7,8 @@ callback Chipmunk presents each arbiter from the body's side: ``total_impulse`` 
 the body received and ``normal`` points away from it, so they are the vector path's +J, +n for
 body A and −J, −n for body B, bit for bit (negation is exact). A body's impulses are summed in
 the order of their values, as there, so both paths give the same sums. The arbiters are read
-through Chipmunk's iterator and getters directly (:mod:`playground._raw`: the same doubles, without
-an ``Arbiter`` object and a ``Vec2d`` per read).
+through Chipmunk's iterator and getters directly (:mod:`playground._engine.raw`: the same doubles,
+without an ``Arbiter`` object and a ``Vec2d`` per read).
 
 An arbiter that may report an impulse Chipmunk did not apply makes its bodies' split unknown for
 the step, by the vector path's rule (:meth:`ContactSplit._stale`): a continuing contact when the
@@ -24,7 +24,7 @@ from typing import Any
 
 import pymunk
 
-from playground import _raw
+from playground._engine import raw
 from playground.scalar.row import Row
 
 __all__ = ["ContactSums"]
@@ -65,7 +65,7 @@ class ContactSums:
         self._impulses: list[Impulse] = []
         self._flags: list[Flags] = []
         self._pairs = False
-        self._visit = _raw.arbiter_callback(self._read)
+        self._visit = raw.arbiter_callback(self._read)
 
     def accumulate(self, rows: list[Row], space: pymunk.Space, stamp: int, rescaled: bool) -> None:
         """Add one substep's arbiter impulses to each row's sums (``jx, jy, jnx, jny``) and set
@@ -74,13 +74,13 @@ class ContactSums:
         ``stamp`` counts the space's steps (1 for its first); ``rescaled``: this substep's length
         differs from the one before it.
         """
-        persistence = _raw.collision_persistence(_raw.space_handle(space))
+        persistence = raw.collision_persistence(raw.space_handle(space))
         pairs = self._pairs = persistence >= 2
         found: list[tuple[Row, list[Flags]]] = []
         keys: set[int] = set()
         any_first = False
         fits = True
-        each_arbiter, visit, null = _raw.each_arbiter, self._visit, _raw.NULL
+        each_arbiter, visit, null = raw.each_arbiter, self._visit, raw.NULL
         for r in rows:
             impulses: list[Impulse] = []
             flags: list[Flags] = []
@@ -145,17 +145,17 @@ class ContactSums:
 
     def _read_arbiter(self, arb: pymunk.Arbiter) -> None:
         """:meth:`_read` from ``Body.each_arbiter`` (where cffi callbacks are refused)."""
-        self._read(None, _raw.arbiter_handle(arb), None)
+        self._read(None, raw.arbiter_handle(arb), None)
 
-    def _read(self, body: _raw.Handle, arb: _raw.ArbiterHandle, data: Any) -> None:
+    def _read(self, body: raw.Handle, arb: raw.ArbiterHandle, data: Any) -> None:
         """One arbiter, seen from the body whose arbiters are iterated (the C callback: reads
         plain values only); its pair key only while pairs are kept."""
-        jx, jy, nx, ny = _raw.arbiter_impulse(arb)
+        jx, jy, nx, ny = raw.arbiter_impulse(arb)
         dot = jx * nx + jy * ny
         self._impulses.append((jx, jy, nx * dot, ny * dot))
         key, fit = 0, True
         if self._pairs:
-            ia, ib = _raw.arbiter_body_ids(arb)
+            ia, ib = raw.arbiter_body_ids(arb)
             lo, hi = (ia, ib) if ia <= ib else (ib, ia)
             key, fit = ((lo << 32) | hi) & _MASK, hi >> 32 == 0
-        self._flags.append((_raw.is_first_contact(arb) != 0, key, fit))
+        self._flags.append((raw.is_first_contact(arb) != 0, key, fit))

@@ -28,7 +28,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import pymunk
 
-from playground import _raw
+from playground._engine import raw
 from playground.gravity import GravityField, GravityRule, Radial, RotatingRoom, Uniform, Zones
 from playground.vec import Vec
 
@@ -117,10 +117,10 @@ class PlainField:
         """The field's force on each body at time ``t`` (s) where it is now, N (the rule's
         scale and direction applied as :func:`~playground.gravity.apply_rules` does)."""
         at = self._at
-        position = _raw.position
+        position = raw.position
         out: dict[pymunk.Body, Vec] = {}
         for body, m, scale, direction in self._bodies:
-            x, y = position(_raw.handle(body))
+            x, y = position(raw.handle(body))
             gx, gy = at(x, y, t)
             gx, gy = ruled(gx, gy, scale, direction)
             out[body] = (gx * m, gy * m)
@@ -131,9 +131,9 @@ class PlainField:
         """Add ``forces`` to the forces the bodies have. With ``sleeping`` on, a body whose
         force and torque would be zero is left alone (setting a force restarts its idle clock),
         as the vectorised path does."""
-        get_force, torque, set_force = _raw.get_force, _raw.torque, _raw.set_force
+        get_force, torque, set_force = raw.get_force, raw.torque, raw.set_force
         for body, (fx, fy) in forces.items():
-            h = _raw.handle(body)
+            h = raw.handle(body)
             f = get_force(h)
             x, y = f.x + fx, f.y + fy
             if sleeping and x == 0.0 and y == 0.0 and torque(h) == 0.0:

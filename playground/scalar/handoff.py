@@ -1,7 +1,7 @@
 """Moving the tracked bodies' state between the vectorised path and the scalar path.
 
 At a plan change (never per step) the world hands the state of
-:class:`~playground.forces.solver.ForceSolver` and :class:`~playground.perception.PerceivedGravity`
+:class:`~playground.forces.solver.ForceSolver` and :class:`~playground.gravity.PerceivedGravity`
 (readings, the contact split, the pairs of recent substeps, the filters' state) to the scalar
 path's rows (:func:`load`), and back (:func:`store`, also before a caller reads the arrays), so a
 run gives one answer whichever path served each step.
@@ -19,7 +19,7 @@ from playground.filters.chain import FilterChain
 from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
 from playground.forces.solver import ForceSolver
-from playground.perception import PerceivedGravity
+from playground.gravity import PerceivedGravity
 from playground.scalar.row import Row
 
 __all__ = ["Loaded", "load", "store"]

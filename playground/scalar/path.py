@@ -3,7 +3,7 @@
 Every numpy call costs about 1 µs and every ``pymunk.batch`` call about 5 µs whatever the body
 count, so below :data:`SCALAR_MAX_BODIES` tracked bodies the vectorised
 :class:`~playground.forces.solver.ForceSolver` and
-:class:`~playground.perception.PerceivedGravity` cost more than the physics. This path reads each
+:class:`~playground.gravity.PerceivedGravity` cost more than the physics. This path reads each
 tracked body's attributes, does the same arithmetic in the same order in Python floats and
 filters with the same 1€ (and median-of-3) equations, so both paths give the same readings (to a
 unit in the last place: magnitudes come from ``math.hypot`` here and from numpy's complex ``abs``
@@ -23,12 +23,12 @@ from collections.abc import Callable, Mapping
 
 import pymunk
 
-from playground import _raw
+from playground._engine import raw
 from playground.filters.one_euro import OneEuroFilter
 from playground.forces.ledger import ForceLedger
 from playground.forces.readings import BodyForces
 from playground.forces.solver import ForceSolver
-from playground.perception import PerceivedGravity
+from playground.gravity import PerceivedGravity
 from playground.scalar import handoff
 from playground.scalar.contacts import ContactSums
 from playground.scalar.row import Row
@@ -55,7 +55,7 @@ class ScalarPath:
     ``contact_split`` and ``check_sleep`` mean what they mean for
     :class:`~playground.forces.solver.ForceSolver`.
 
-    >>> from playground.perception import Perception
+    >>> from playground.gravity import Perception
     >>> import numpy as np
     >>> space = pymunk.Space()
     >>> body = pymunk.Body(2.0, 1.0)
@@ -118,8 +118,8 @@ class ScalarPath:
         self._field = field is not None
         self._summed = 0
         split = self.contact_split
-        get_velocity, angular_velocity = _raw.get_velocity, _raw.angular_velocity
-        get_force, torque = _raw.get_force, _raw.torque
+        get_velocity, angular_velocity = raw.get_velocity, raw.angular_velocity
+        get_force, torque = raw.get_force, raw.torque
         for r in self.rows:
             h = r.h
             v = get_velocity(h)
@@ -143,8 +143,8 @@ class ScalarPath:
         impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
         check_sleep = self.check_sleep
         first_sum = self._summed == 0
-        get_velocity, angular_velocity = _raw.get_velocity, _raw.angular_velocity
-        is_sleeping = _raw.is_sleeping
+        get_velocity, angular_velocity = raw.get_velocity, raw.angular_velocity
+        is_sleeping = raw.is_sleeping
         for r in self.rows:
             h = r.h
             v = get_velocity(h)
@@ -246,7 +246,7 @@ class ScalarPath:
     def filter(self, dt: float, threshold: float, up_default: Callable[[pymunk.Body], Vec]) -> None:
         """Perceived gravity: −specific force through median-of-3 and 1€, and the up, held while
         |perceived gravity| < ``threshold`` (m/s²); ``up_default`` gives a row's up until it has
-        felt a strong enough reading (see :class:`~playground.perception.PerceivedGravity`)."""
+        felt a strong enough reading (see :class:`~playground.gravity.PerceivedGravity`)."""
         one = self._one_euro
         assert one is not None
         r_d = one._w_d * dt

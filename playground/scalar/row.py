@@ -1,7 +1,7 @@
 """One tracked body's state on the scalar path, in plain floats.
 
 A :class:`Row` holds what :class:`~playground.forces.solver.ForceSolver` and
-:class:`~playground.perception.PerceivedGravity` keep in one row of their arrays: the step's
+:class:`~playground.gravity.PerceivedGravity` keep in one row of their arrays: the step's
 inputs (v₀, ω₀, forces, the field's force), its readings (N, m/s²), the contact split's sums and
 results, and the filter's state (median-of-3 window, 1€ estimate and derivative, held up).
 """
@@ -12,7 +12,7 @@ import math
 
 import pymunk
 
-from playground import _raw
+from playground._engine import raw
 
 __all__ = ["Row"]
 
@@ -88,8 +88,8 @@ class Row:
 
     def __init__(self, body: pymunk.Body) -> None:
         self.body = body
-        self.h = _raw.handle(body)
-        """The body's ``cpBody*``: its state is read through :mod:`playground._raw`."""
+        self.h = raw.handle(body)
+        """The body's ``cpBody*``: its state is read through :mod:`playground._engine.raw`."""
         self.m = self.moment = self.inv_m = self.m_dt = self.i_dt = 0.0
         self.locked = False
         # inputs: v₀, ω₀, v, ω after the last substep, forces integrated, the field's part

@@ -15,7 +15,6 @@ from typing import TypeVar
 
 import pymunk
 
-from playground._validate import bounded, bounded_vec, in_range
 from playground.limits import (
     MAX_ANGLE,
     MAX_ANGULAR_SPEED,
@@ -28,6 +27,7 @@ from playground.limits import (
     MIN_MASS,
     MIN_MOMENT,
 )
+from playground.params import bounded, bounded_vec, in_range
 
 __all__ = ["check_body", "check_shapes", "check_size", "check_surface", "group", "surfaced"]
 

@@ -13,9 +13,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from playground.fields import check, param
+from playground.gravity import Perception
 from playground.limits import MAX_DT, MAX_ITERATIONS, MAX_LENGTH, MAX_SUBSTEPS, MIN_DT
-from playground.perception import Perception
+from playground.params import check, param
 
 __all__ = ["WorldConfig"]
 

@@ -14,13 +14,13 @@ import sys
 
 import pymunk
 
-from playground import _raw
-from playground._validate import bounded, bounded_vec
+from playground._engine import raw
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.readings import BodyForces
 from playground.forces.solver import ForceSolver
+from playground.gravity import PerceivedGravity
 from playground.limits import MAX_COORDINATE, MAX_IMPULSE, RUNAWAY_FORCE
-from playground.perception import PerceivedGravity
+from playground.params import bounded, bounded_vec
 from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.physics import PhysicsStage
@@ -100,7 +100,7 @@ class ForceAPI(BodyRegistry):
             bounded_vec("force", force, RUNAWAY_FORCE if guard else math.inf, "N")
         if point is not None and not _plain_within(point, MAX_COORDINATE):
             bounded_vec("point", point, MAX_COORDINATE, "m")
-        if _raw.body_type(_raw.handle(b)) == pymunk.Body.DYNAMIC:
+        if raw.body_type(raw.handle(b)) == pymunk.Body.DYNAMIC:
             # The ledger's first entry replans the step (its on_first).
             self.ledger.add(b, force, point=point, category=category)
 
@@ -131,7 +131,7 @@ class ForceAPI(BodyRegistry):
             t_cap = _RUNAWAY_TORQUE if guard else _LARGEST
             if not -t_cap <= torque <= t_cap:
                 bounded("torque", torque, _RUNAWAY_TORQUE if guard else math.inf, "N·m")
-        if _raw.body_type(_raw.handle(body)) == pymunk.Body.DYNAMIC:
+        if raw.body_type(raw.handle(body)) == pymunk.Body.DYNAMIC:
             self.ledger.add_all(self._own(body), forces, torque, point)
 
     def apply_torque(
@@ -143,7 +143,7 @@ class ForceAPI(BodyRegistry):
         cap = _RUNAWAY_TORQUE if guard else _LARGEST
         if not (type(torque) is float and -cap <= torque <= cap):
             bounded("torque", torque, _RUNAWAY_TORQUE if guard else math.inf, "N·m")
-        if _raw.body_type(_raw.handle(b)) == pymunk.Body.DYNAMIC:
+        if raw.body_type(raw.handle(b)) == pymunk.Body.DYNAMIC:
             self.ledger.add_torque(b, torque, category)
 
     def apply_impulse(

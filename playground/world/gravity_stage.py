@@ -25,8 +25,8 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
-from playground import _raw
-from playground._batch import lookup
+from playground._engine import raw
+from playground._engine.batch import lookup
 from playground.forces.ledger import Category, ForceLedger
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
 from playground.scalar.field import PlainField, PointField, point_field, ruled
@@ -63,7 +63,7 @@ class GravityStage:
         replan: Callable[[], None],
     ) -> None:
         self.space = space
-        self._space_h = _raw.space_handle(space)
+        self._space_h = raw.space_handle(space)
         self._bodies = bodies
         self._names = names
         self.ledger = ledger
@@ -189,7 +189,7 @@ class GravityStage:
         if self._registry_dirty:
             self._refresh_registry()
         g_space = self.space_gravity(t)
-        if _raw.gravity(self._space_h) != g_space:
+        if raw.gravity(self._space_h) != g_space:
             self.space.gravity = g_space  # setting it wakes every body: only when it changes
         if self.field.uniform:
             # Only bodies with their own rule need a correction force: m·(g_rule − g_space), in
@@ -205,7 +205,7 @@ class GravityStage:
                 else:
                     rx = scale * magnitude * direction[0]
                     ry = scale * magnitude * direction[1]
-                m = _raw.mass(_raw.handle(body))
+                m = raw.mass(raw.handle(body))
                 add(body, (m * (rx - gx), m * (ry - gy)), category=_PASSIVE)
             return None
         if self._plain_on:

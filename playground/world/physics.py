@@ -7,7 +7,7 @@ space; FORCES recovers each tracked body's engine forces by reverse integration;
 into perceived gravity. Few tracked bodies (and with substeps, few bodies), in a field uniform in
 space or one the gravity stage evaluates body by body, are served by the scalar path in plain
 floats (:mod:`playground.scalar`), contact split included; the rest by numpy and ``pymunk.batch``
-(:class:`~playground.forces.solver.ForceSolver`, :class:`~playground.perception.PerceivedGravity`).
+(:class:`~playground.forces.solver.ForceSolver`, :class:`~playground.gravity.PerceivedGravity`).
 Both paths give the same readings; the state moves with a switch.
 """
 
@@ -20,13 +20,13 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
-from playground import _raw
-from playground._batch import BodyRows
+from playground._engine import raw
+from playground._engine.batch import BodyRows
 from playground.forces.ledger import ForceLedger
 from playground.forces.solver import ForceSolver
+from playground.gravity import PerceivedGravity
 from playground.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
 from playground.limits import RUNAWAY_FORCE
-from playground.perception import PerceivedGravity
 from playground.scalar.field import PlainField
 from playground.scalar.path import FieldOnBodies, ScalarPath
 from playground.vec import Vec
@@ -50,7 +50,7 @@ class PhysicsStage:
         up_at: Callable[[pymunk.Body], Vec],
     ) -> None:
         self.space = space
-        self._space_h = _raw.space_handle(space)
+        self._space_h = raw.space_handle(space)
         self.ledger = ledger
         self._replan = replan
         self._up_at = up_at
@@ -243,7 +243,7 @@ class PhysicsStage:
                     body.force = held_force
                     body.torque = held_torque
             # Chipmunk rescales warm starts by h / (its last step) when the length changes.
-            rescaled = split and _raw.current_time_step(self._space_h) != h
+            rescaled = split and raw.current_time_step(self._space_h) != h
             space.step(h)
             self._space_steps += 1
             scalar.after_substep(space, last=k == n - 1, stamp=self._space_steps, rescaled=rescaled)
@@ -284,7 +284,7 @@ class PhysicsStage:
             self.scalar.finish(
                 dt=cfg.dt,
                 damping=cfg.damping,
-                space_gravity=_raw.gravity(self._space_h),
+                space_gravity=raw.gravity(self._space_h),
                 ledger=self.ledger,
                 substeps=cfg.substeps,
             )
@@ -293,7 +293,7 @@ class PhysicsStage:
             dt=cfg.dt,
             substeps=cfg.substeps,
             damping=cfg.damping,
-            space_gravity=_raw.gravity(self._space_h),
+            space_gravity=raw.gravity(self._space_h),
             ledger=self.ledger,
         )
 

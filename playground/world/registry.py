@@ -27,8 +27,8 @@ from typing import Self
 
 import pymunk
 
-from playground._validate import bounded, bounded_vec, finite, in_range
 from playground.limits import MAX_ANGLE, MAX_COORDINATE, MAX_LENGTH, MAX_MASS, MIN_MASS
+from playground.params import bounded, bounded_vec, finite, in_range
 from playground.vec import Vec
 from playground.world.bodies import (
     check_body,

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from enum import Enum
 from typing import TYPE_CHECKING
 
-from playground._validate import finite
+from playground.params import finite
 
 if TYPE_CHECKING:
     from playground.world.world import World

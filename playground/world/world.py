@@ -27,9 +27,8 @@ from collections.abc import Callable, Sequence
 import pymunk
 import pymunk.batch as batch
 
-from playground._validate import bounded_vec, in_range
 from playground.forces.ledger import ForceLedger
-from playground.gravity import GravityField, GravityRule, Uniform
+from playground.gravity import GravityField, GravityRule, Perception, Uniform
 from playground.guard import GUARD_EVERY, RunawayError, state_runaway
 from playground.limits import (
     MAX_GRAVITY,
@@ -39,7 +38,7 @@ from playground.limits import (
     MIN_MOMENT,
 )
 from playground.movers import Mover, Path
-from playground.perception import Perception
+from playground.params import bounded_vec, in_range
 from playground.scalar.path import SCALAR_MAX_BODIES
 from playground.vec import Vec
 from playground.world.config import WorldConfig

@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import pytest
 
-from playground import controller, faults, movers, perception, world
+from playground import controller, faults, movers, world
+from playground.gravity import perception
 from playground.level import find, load
 from playground.world import force_api, gravity_stage
 

@@ -9,11 +9,12 @@ from typing import Any
 import pytest
 from pydantic import BaseModel, ValidationError
 
-from playground import gravity, intents, movers, perception
+from playground import gravity, intents, movers
 from playground.controller.config import ControllerConfig
-from playground.fields import SPEC, Spec
+from playground.gravity import perception
 from playground.level import schema
 from playground.level.derive import _MODELS, to_core
+from playground.params import SPEC, Spec
 from playground.world.config import WorldConfig
 
 CORE_CONFIGS = [

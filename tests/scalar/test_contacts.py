@@ -10,7 +10,8 @@ import random
 import pymunk
 import pytest
 
-from playground import World, WorldConfig, _raw
+from playground import World, WorldConfig
+from playground._engine import raw
 
 STEPS = 180
 """1.5 s at 120 Hz: the balls roll, the box lands on the plank and the pile settles."""
@@ -59,7 +60,7 @@ def test_a_body_with_many_arbiters_reads_the_same_split(
     (first contacts from cached arbiters) with persistence 3, and bodies with three or more
     arbiters."""
     if not callbacks:
-        monkeypatch.setattr(_raw, "arbiter_callback", lambda visit: None)
+        monkeypatch.setattr(raw, "arbiter_callback", lambda visit: None)
     scalar, vector = (_plank_on_balls(m, seed, persistence) for m in (10**6, 0))
     known = unknown = crowded = 0
     for _ in range(STEPS):

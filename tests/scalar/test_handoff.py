@@ -7,7 +7,7 @@ import numpy as np
 
 from playground import World, WorldConfig
 from playground.filters.chain import FilterChain
-from playground.perception import Perception
+from playground.gravity import Perception
 from playground.scalar import handoff
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pymunk
 import pytest
 
-from playground._batch import BodyRows
+from playground._engine.batch import BodyRows
 from playground.forces import Category
 from playground.gravity import GravityRule, Radial, Uniform
 from playground.world.world import World

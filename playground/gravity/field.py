@@ -3,7 +3,8 @@
 A field answers one question, vectorised: what acceleration (m/s²) does it give at these points at
 time t? The world decides how to apply it: a field that is *uniform in space* becomes
 ``space.gravity`` (Chipmunk's C path, no per-step Python per body); anything else becomes one
-vectorised force write per step. Per-body rules (scale, own direction) live in :class:`GravityRule`.
+vectorised force write per step. Per-body rules (scale, own direction) live in
+:mod:`playground.gravity.rule`.
 
 >>> field = Uniform((0.0, -9.81))
 >>> field.at(np.zeros((2, 2)), t=0.0).tolist()
@@ -19,23 +20,21 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 from numpy.typing import NDArray
 
-from playground._validate import bounded, unit
-from playground.fields import check, param
 from playground.limits import (
     MAX_ANGLE,
     MAX_ANGULAR_SPEED,
     MAX_COORDINATE,
     MAX_GRAVITY,
-    MAX_GRAVITY_SCALE,
     MAX_LENGTH,
     MAX_TIME,
 )
+from playground.params import bounded, check, param
 from playground.vec import Vec
 
 __all__ = [
     "STANDARD_GRAVITY",
     "GravityField",
-    "GravityRule",
+    "Points",
     "Radial",
     "RotatingRoom",
     "Turn",
@@ -265,40 +264,3 @@ class Zones:
                 out[inside] = zone.field.at(points[inside], t)
                 taken |= inside
         return out
-
-
-@dataclass(frozen=True, slots=True)
-class GravityRule:
-    """How one body departs from the field: a scale, and optionally its own direction.
-
-    The body's gravity is ``scale · field`` or, with a ``direction``,
-    ``scale · |field| · direction`` (a unit vector). ``GravityRule(scale=0)`` nullifies gravity.
-
-    >>> GravityRule(direction=(0.0, 2.0)).direction
-    (0.0, 1.0)
-    """
-
-    scale: float = 1.0
-    direction: Vec | None = None
-
-    def __post_init__(self) -> None:
-        bounded("scale", self.scale, MAX_GRAVITY_SCALE, "× the field")
-        if self.direction is not None:
-            object.__setattr__(self, "direction", unit("direction", self.direction))
-
-    @property
-    def is_default(self) -> bool:
-        return self.scale == 1.0 and self.direction is None
-
-
-def apply_rules(field_g: Points, scale: NDArray[np.float64], direction: Points) -> Points:
-    """Per-body gravity from the field at each body and its rule, vectorised.
-
-    ``direction`` rows are NaN where a body keeps the field's direction.
-    """
-    g = field_g * scale[:, None]
-    own = ~np.isnan(direction[:, 0])
-    if own.any():
-        mag = np.hypot(field_g[own, 0], field_g[own, 1]) * scale[own]
-        g[own] = direction[own] * mag[:, None]
-    return g

@@ -1,7 +1,7 @@
-"""Plumbing shared by the nearest-hit queries through Chipmunk (:mod:`playground._sweep`,
-:mod:`playground._reach`): the C side of a query, converted once (the ``cpSpace*``, the shape
+"""Plumbing shared by the nearest-hit queries through Chipmunk (:mod:`playground._engine.sweep`,
+:mod:`playground._engine.reach`): the C side of a query, converted once (the ``cpSpace*``, the shape
 filter, the best-so-far list a C callback fills, and its handle). The callbacks themselves are
-made by :func:`playground._raw.c_callback`.
+made by :func:`playground._engine.raw.c_callback`.
 
 >>> import pymunk
 >>> query = NearestQuery(pymunk.Space(), pymunk.ShapeFilter(), [0.0, None])

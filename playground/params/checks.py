@@ -1,4 +1,5 @@
-"""Small argument checks shared by the core's frozen configs: each error names the parameter."""
+"""Argument checks of single values, for what a declaration cannot say (a world's mutators, a
+mover's arguments, a rule's direction): each error names the parameter and its unit."""
 
 from __future__ import annotations
 

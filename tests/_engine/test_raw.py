@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from playground import _raw
+from playground._engine import raw
 
 _FINITE = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False)
 
@@ -50,30 +50,30 @@ def test_reads_equal_the_properties_bit_for_bit(
     vx: float, vy: float, w: float, angle: float, fx: float, fy: float
 ) -> None:
     body = _stepped_body(vx, vy, w, angle, fx, fy)
-    h = _raw.handle(body)
-    assert _bits(_raw.velocity(h)) == _bits(tuple(body.velocity))
-    assert _bits(_raw.position(h)) == _bits(tuple(body.position))
-    assert _bits(_raw.rotation(h)) == _bits(tuple(body.rotation_vector))
-    assert _bits(_raw.force(h)) == _bits(tuple(body.force))
-    assert _bits((_raw.angular_velocity(h),)) == _bits((body.angular_velocity,))
-    assert _bits((_raw.torque(h),)) == _bits((body.torque,))
+    h = raw.handle(body)
+    assert _bits(raw.velocity(h)) == _bits(tuple(body.velocity))
+    assert _bits(raw.position(h)) == _bits(tuple(body.position))
+    assert _bits(raw.rotation(h)) == _bits(tuple(body.rotation_vector))
+    assert _bits(raw.force(h)) == _bits(tuple(body.force))
+    assert _bits((raw.angular_velocity(h),)) == _bits((body.angular_velocity,))
+    assert _bits((raw.torque(h),)) == _bits((body.torque,))
 
 
 def test_body_id_is_the_property() -> None:
     bodies = [pymunk.Body(1.0, 1.0) for _ in range(5)]
-    assert [_raw.body_id(b) for b in bodies] == [b.id for b in bodies]
-    assert len({_raw.body_id(b) for b in bodies}) == 5
+    assert [raw.body_id(b) for b in bodies] == [b.id for b in bodies]
+    assert len({raw.body_id(b) for b in bodies}) == 5
 
 
 @UNTIMED
 @given(_FINITE, _FINITE, _FINITE)
 def test_writes_equal_the_property_writes(fx: float, fy: float, t: float) -> None:
-    raw, prop = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
-    _raw.set_force(_raw.handle(raw), fx, fy)
-    _raw.set_torque(_raw.handle(raw), t)
+    direct, prop = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
+    raw.set_force(raw.handle(direct), fx, fy)
+    raw.set_torque(raw.handle(direct), t)
     prop.force = (fx, fy)
     prop.torque = t
-    assert _bits((*raw.force, raw.torque)) == _bits((*prop.force, prop.torque))
+    assert _bits((*direct.force, direct.torque)) == _bits((*prop.force, prop.torque))
 
 
 def _ball_on_a_floor() -> tuple[pymunk.Space, pymunk.Body]:
@@ -93,7 +93,7 @@ def test_a_write_wakes_a_sleeping_body_as_the_property_does() -> None:
     for _ in range(600):
         space.step(1 / 60)
     assert body.is_sleeping
-    _raw.set_force(_raw.handle(body), 0.0, 1.0)
+    raw.set_force(raw.handle(body), 0.0, 1.0)
     assert not body.is_sleeping
 
 
@@ -106,9 +106,9 @@ def test_mass_moment_and_centre_equal_the_properties_bit_for_bit(
     body.center_of_gravity = (cx * 1e-3, -cx * 2e-3)
     body.position = (x, y)
     body.angle = angle
-    h = _raw.handle(body)
-    assert _bits((_raw.mass(h), _raw.moment(h))) == _bits((body.mass, body.moment))
-    assert _bits(_raw.centre_of_gravity(h)) == _bits(
+    h = raw.handle(body)
+    assert _bits((raw.mass(h), raw.moment(h))) == _bits((body.mass, body.moment))
+    assert _bits(raw.centre_of_gravity(h)) == _bits(
         tuple(body.local_to_world(body.center_of_gravity))
     )
 
@@ -116,7 +116,7 @@ def test_mass_moment_and_centre_equal_the_properties_bit_for_bit(
 def test_body_type_is_the_property() -> None:
     kinds = (pymunk.Body.DYNAMIC, pymunk.Body.KINEMATIC, pymunk.Body.STATIC)
     bodies = [pymunk.Body(1.0, 1.0, body_type=kind) for kind in kinds]
-    assert [_raw.body_type(_raw.handle(b)) for b in bodies] == list(kinds)
+    assert [raw.body_type(raw.handle(b)) for b in bodies] == list(kinds)
 
 
 @UNTIMED
@@ -124,7 +124,7 @@ def test_body_type_is_the_property() -> None:
 def test_space_gravity_is_the_property(gx: float, gy: float) -> None:
     space = pymunk.Space()
     space.gravity = (gx, gy)
-    assert _bits(_raw.gravity(_raw.space_handle(space))) == _bits(tuple(space.gravity))
+    assert _bits(raw.gravity(raw.space_handle(space))) == _bits(tuple(space.gravity))
 
 
 def test_is_sleeping_is_the_property() -> None:
@@ -132,7 +132,7 @@ def test_is_sleeping_is_the_property() -> None:
     seen = set()
     for _ in range(600):
         space.step(1 / 60)
-        assert bool(_raw.is_sleeping(_raw.handle(body))) == body.is_sleeping
+        assert bool(raw.is_sleeping(raw.handle(body))) == body.is_sleeping
         seen.add(body.is_sleeping)
     assert seen == {False, True}
 
@@ -155,12 +155,12 @@ def _through_properties(body: pymunk.Body) -> list[Seen]:
 def _through_raw(body: pymunk.Body) -> list[Seen]:
     seen: list[Seen] = []
 
-    def read(_: _raw.Handle, arb: _raw.ArbiterHandle, data: object) -> None:
-        first = _raw.is_first_contact(arb) != 0
-        seen.append((_raw.arbiter_impulse(arb), first, _raw.arbiter_body_ids(arb)))
+    def read(_: raw.Handle, arb: raw.ArbiterHandle, data: object) -> None:
+        first = raw.is_first_contact(arb) != 0
+        seen.append((raw.arbiter_impulse(arb), first, raw.arbiter_body_ids(arb)))
 
-    callback = _raw.arbiter_callback(read)
-    _raw.each_arbiter(_raw.handle(body), callback, _raw.NULL)
+    callback = raw.arbiter_callback(read)
+    raw.each_arbiter(raw.handle(body), callback, raw.NULL)
     return seen
 
 
@@ -187,11 +187,11 @@ def test_arbiter_reads_equal_the_properties_bit_for_bit(spins: list[tuple[float,
     for _ in range(60):
         space.step(1 / 60)
         for body in [*bodies, space.static_body]:
-            props, raw = _through_properties(body), _through_raw(body)
-            assert [(_bits(i), f, ids) for i, f, ids in raw] == [
+            props, direct = _through_properties(body), _through_raw(body)
+            assert [(_bits(i), f, ids) for i, f, ids in direct] == [
                 (_bits(i), f, ids) for i, f, ids in props
             ]
-            arbiters += len(raw)
+            arbiters += len(direct)
     assert arbiters > 0
 
 
@@ -201,7 +201,7 @@ def test_vector_structs_equal_the_properties_bit_for_bit(
     vx: float, vy: float, w: float, angle: float, fx: float, fy: float
 ) -> None:
     body = _stepped_body(vx, vy, w, angle, fx, fy)
-    v, f = _raw.get_velocity(_raw.handle(body)), _raw.get_force(_raw.handle(body))
+    v, f = raw.get_velocity(raw.handle(body)), raw.get_force(raw.handle(body))
     assert _bits((v.x, v.y, f.x, f.y)) == _bits((*body.velocity, *body.force))
 
 
@@ -210,15 +210,15 @@ def test_vector_structs_equal_the_properties_bit_for_bit(
 def test_mover_reads_and_writes_equal_the_properties_bit_for_bit(
     vx: float, vy: float, w: float, angle: float
 ) -> None:
-    raw = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+    direct = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
     prop = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
-    raw.angle = prop.angle = angle
-    h = _raw.handle(raw)
-    _raw.set_velocity(h, vx, vy)
-    _raw.set_angular_velocity(h, w)
+    direct.angle = prop.angle = angle
+    h = raw.handle(direct)
+    raw.set_velocity(h, vx, vy)
+    raw.set_angular_velocity(h, w)
     prop.velocity = (vx, vy)
     prop.angular_velocity = w
-    assert _bits((*raw.velocity, raw.angular_velocity, _raw.angle(h))) == _bits(
+    assert _bits((*direct.velocity, direct.angular_velocity, raw.angle(h))) == _bits(
         (*prop.velocity, prop.angular_velocity, prop.angle)
     )
 
@@ -229,9 +229,9 @@ def test_space_step_and_persistence_are_the_properties(dt: float, persistence: i
     space = pymunk.Space()
     space.collision_persistence = persistence
     space.step(dt)
-    s = _raw.space_handle(space)
-    assert _bits((_raw.current_time_step(s),)) == _bits((space.current_time_step,))
-    assert _raw.collision_persistence(s) == space.collision_persistence == persistence
+    s = raw.space_handle(space)
+    assert _bits((raw.current_time_step(s),)) == _bits((space.current_time_step,))
+    assert raw.collision_persistence(s) == space.collision_persistence == persistence
 
 
 def _keep(*_: object) -> None:
@@ -239,8 +239,8 @@ def _keep(*_: object) -> None:
 
 
 def test_a_callback_is_made_where_cffi_allows() -> None:
-    assert _raw.c_callback("cpSpacePointQueryFunc", _keep) is not None
-    assert _raw.arbiter_callback(_keep) is not None
+    assert raw.c_callback("cpSpacePointQueryFunc", _keep) is not None
+    assert raw.arbiter_callback(_keep) is not None
 
 
 @pytest.mark.parametrize("refusal", [MemoryError, RuntimeError])
@@ -252,6 +252,6 @@ def test_where_cffi_refuses_callbacks_there_is_none(
     def refuse(*_: object) -> None:
         raise refusal("write+execute memory refused")
 
-    monkeypatch.setattr(_raw, "_new_callback", refuse)
-    assert _raw.c_callback("cpSpacePointQueryFunc", _keep) is None
-    assert _raw.arbiter_callback(_keep) is None
+    monkeypatch.setattr(raw, "_new_callback", refuse)
+    assert raw.c_callback("cpSpacePointQueryFunc", _keep) is None
+    assert raw.arbiter_callback(_keep) is None

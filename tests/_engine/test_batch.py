@@ -1,11 +1,11 @@
-"""Laws of the batch plumbing (playground/_batch.py): rows keyed by id in the engine's order, the
-same ids array while the order holds, each read with its own ids."""
+"""Laws of the batch plumbing (playground/_engine/batch.py): rows keyed by id in the engine's
+order, the same ids array while the order holds, each read with its own ids."""
 
 from __future__ import annotations
 
 import pymunk
 
-from playground._batch import BodyRows
+from playground._engine.batch import BodyRows
 
 
 def _space(n: int) -> tuple[pymunk.Space, list[pymunk.Body]]:

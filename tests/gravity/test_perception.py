@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from playground.filters.one_euro import OneEuroFilter
-from playground.perception import PerceivedGravity, Perception
+from playground.gravity import PerceivedGravity, Perception
 
 DT = 1 / 120  # s, a level's step
 G = 9.81  # m/s², the specific force of a body at rest on flat ground (up)

@@ -6,9 +6,9 @@ iteration directly, for a controller's load and touch every step.
 ~0.7 µs a step even with no contact at all. :class:`Contacts` passes Chipmunk callbacks of its
 own, made once, that add the same terms in the same order (Chipmunk's arbiter list), so its
 answers are those of :func:`load_by_pymunk` and :func:`touching_by_pymunk`, the same sums over
-pymunk's public API (``tests/test_contacts.py`` compares them bit for bit).
+pymunk's public API (``tests/_engine/test_contacts.py`` compares them bit for bit).
 
-The callbacks and the iteration are :mod:`playground._raw`'s; where the platform refuses cffi
+The callbacks and the iteration are :mod:`playground._engine.raw`'s; where the platform refuses cffi
 callbacks, :class:`Contacts` answers through the pymunk functions.
 
 >>> import pymunk
@@ -32,12 +32,12 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk_cffi import ffi
 
-from playground import _raw
+from playground._engine import raw
 
 __all__ = ["Contacts", "load_by_pymunk", "touching_by_pymunk"]
 
-_each_arbiter = _raw.each_arbiter
-_impulse = _raw.arbiter_impulse
+_each_arbiter = raw.each_arbiter
+_impulse = raw.arbiter_impulse
 _from_handle = ffi.from_handle
 
 
@@ -52,8 +52,8 @@ def _touch(body: Any, arbiter: Any, data: Any) -> None:
     _from_handle(data)[4] = True
 
 
-_load_callback = _raw.arbiter_callback(_add_load)
-_touch_callback = _raw.arbiter_callback(_touch)
+_load_callback = raw.arbiter_callback(_add_load)
+_touch_callback = raw.arbiter_callback(_touch)
 
 
 def load_by_pymunk(body: pymunk.Body, ux: float, uy: float, h: float) -> float:

@@ -21,10 +21,10 @@ def writable(option: str, path: str | Path, *, suffixes: Sequence[str] = ()) -> 
     """``path`` if a file can be written there: its folder exists, it is not a folder, and it ends
     in one of ``suffixes`` (any, if none are given).
 
-    >>> writable("--output", "/no/such/x.json")
+    >>> writable("--output", "/no/x.json")
     Traceback (most recent call last):
     ...
-    playground._preflight.UsageError: --output: folder /no/such does not exist (for /no/such/x.json)
+    playground.cli.preflight.UsageError: --output: folder /no does not exist (for /no/x.json)
     """
     p = Path(path)
     if suffixes and p.suffix.lower() not in suffixes:

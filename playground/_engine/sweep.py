@@ -6,12 +6,12 @@ and two ``Vec2d`` for each, then the caller walks the list: ~2.7 µs for a probe
 :class:`Sweep` passes Chipmunk a callback of its own that keeps only the nearest non-sensor hit
 as plain floats (~1 µs). It visits the same hits in the same order and keeps the same one (the
 strictly nearest, the first of equally near ones), so the answer is that of
-:func:`nearest_by_pymunk`, the same walk over pymunk's public query (``tests/test_sweep.py``
+:func:`nearest_by_pymunk`, the same walk over pymunk's public query (``tests/_engine/test_sweep.py``
 compares them bit for bit). ``segment_query_first`` is not an answer: with a radius, pymunk
 7.3.1's can return a farther shape (inside a 64-segment ring it reports a neighbouring chord's
 end cap, normal 40° off, while the chord under the probe is 7 cm nearer).
 
-Like :mod:`playground._raw` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
+Like :mod:`playground._engine.raw` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
 major version is pinned). Where the platform refuses a cffi callback (memory both writable and
 executable), :class:`Sweep` answers through :func:`nearest_by_pymunk` instead.
 
@@ -32,8 +32,8 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk_cffi import lib
 
-from playground._query import NearestQuery, from_handle, is_sensor, shape_data
-from playground._raw import c_callback
+from playground._engine.query import NearestQuery, from_handle, is_sensor, shape_data
+from playground._engine.raw import c_callback
 
 __all__ = ["Hit", "Sweep", "nearest_by_pymunk"]
 

@@ -15,7 +15,6 @@ from numpy.typing import NDArray
 
 _F = batch.BodyFields
 _READ = _F.BODY_ID | _F.VELOCITY | _F.ANGULAR_VELOCITY | _F.FORCE | _F.TORQUE
-_READ_POS = _F.BODY_ID | _F.POSITION
 _READ_ALL = _READ | _F.POSITION
 """A read with positions: x, y, then the state columns (batch packs fields in flag order)."""
 _READ_FIELD = _F.BODY_ID | _F.POSITION | _F.FORCE | _F.TORQUE
@@ -143,16 +142,6 @@ class BodyRows:
         self._out.set_float_buf(data)
         self._out.set_int_buf(self.ids)
         batch.set_space_bodies(space, _WRITE, self._out)
-
-
-def read_positions(
-    space: pymunk.Space, buffer: batch.Buffer
-) -> tuple[NDArray[np.uintp], NDArray[np.float64]]:
-    """Ids and (x, y) rows of every body (copies)."""
-    buffer.clear()
-    batch.get_space_bodies(space, _READ_POS, buffer)
-    ids = np.frombuffer(buffer.int_buf(), dtype=np.uintp).copy()
-    return ids, np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 2).copy()
 
 
 def read_arbiters(

@@ -12,8 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from playground import _contacts
-from playground._contacts import Contacts, load_by_pymunk, touching_by_pymunk
+from playground._engine import contacts
+from playground._engine.contacts import Contacts, load_by_pymunk, touching_by_pymunk
 
 DT = 1.0 / 120.0
 """s."""
@@ -54,9 +54,9 @@ def test_the_contacts_answer_as_pymunk(seed: int, steps: int, angle: float, subs
     h = DT / substeps
     _, bodies = _pile(seed, steps)
     for body in bodies:
-        contacts = Contacts(body)
-        assert _bits(contacts.load(ux, uy, h)) == _bits(load_by_pymunk(body, ux, uy, h))
-        assert contacts.touching() is touching_by_pymunk(body)
+        reader = Contacts(body)
+        assert _bits(reader.load(ux, uy, h)) == _bits(load_by_pymunk(body, ux, uy, h))
+        assert reader.touching() is touching_by_pymunk(body)
 
 
 def test_a_pile_has_bodies_touching_and_pressed_from_above() -> None:
@@ -71,8 +71,8 @@ def test_a_pile_has_bodies_touching_and_pressed_from_above() -> None:
 def test_without_cffi_callbacks_the_contacts_ask_pymunk(monkeypatch: pytest.MonkeyPatch) -> None:
     _, bodies = _pile(2, 240)
     body = bodies[0]
-    contacts = Contacts(body)
-    load, touching = contacts.load(0.0, 1.0, DT), contacts.touching()
-    monkeypatch.setattr(_contacts, "_load_callback", None)
-    monkeypatch.setattr(_contacts, "_touch_callback", None)
-    assert _bits(contacts.load(0.0, 1.0, DT)) == _bits(load) and contacts.touching() is touching
+    reader = Contacts(body)
+    load, touching = reader.load(0.0, 1.0, DT), reader.touching()
+    monkeypatch.setattr(contacts, "_load_callback", None)
+    monkeypatch.setattr(contacts, "_touch_callback", None)
+    assert _bits(reader.load(0.0, 1.0, DT)) == _bits(load) and reader.touching() is touching

@@ -7,8 +7,8 @@ A pymunk property is a Python function that calls the C getter and wraps the res
 ``Vec2d``), ``body.id`` ~0.45 µs (a cast of the user-data pointer). On a one-player level the
 controller and the scalar path read a dozen such values a step, which is most of their bill.
 These functions call the same C getters and setters pymunk's properties call, so they read and
-write the very same doubles (``tests/test_raw.py`` checks them against the properties, bit for
-bit, so an upgrade of pymunk that changed its internals fails there, not in a trajectory).
+write the very same doubles (``tests/_engine/test_raw.py`` checks them against the properties,
+bit for bit, so an upgrade of pymunk that changed its internals fails there, not in a trajectory).
 
 They take a body's *handle* (:func:`handle`, the ``cpBody*`` pymunk keeps), not the body; a
 body's arbiters are iterated with a C callback that gets the arbiter's handle (no ``Arbiter``
@@ -217,7 +217,10 @@ def c_callback(c_type: str, keep: Callable[..., None]) -> Any:
     own iteration or query."""
     try:
         return _new_callback(c_type, keep)
-    except (MemoryError, RuntimeError):  # a platform without cffi callbacks (tests/test_raw.py)
+    except (
+        MemoryError,
+        RuntimeError,
+    ):  # a platform without cffi callbacks (tests/_engine/test_raw.py)
         return None
 
 

@@ -7,9 +7,9 @@ one it may push. :class:`Reach` passes Chipmunk a callback of its own that keeps
 nearest eligible hit (not a sensor, on a dynamic body other than the ground) as plain floats.
 It visits the same shapes in the same order and keeps the same one (the strictly nearest, the
 first of equally near ones), so the answer is that of :func:`nearest_by_pymunk`, the same walk
-over pymunk's public query (``tests/test_reach.py`` compares them bit for bit).
+over pymunk's public query (``tests/_engine/test_reach.py`` compares them bit for bit).
 
-Like :mod:`playground._sweep` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
+Like :mod:`playground._engine.sweep` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
 major version is pinned). Where the platform refuses a cffi callback (memory both writable and
 executable), :class:`Reach` answers through :func:`nearest_by_pymunk` instead.
 
@@ -32,8 +32,8 @@ from typing import Any
 import pymunk
 from pymunk._chipmunk_cffi import ffi, lib
 
-from playground._query import NearestQuery, from_handle, is_sensor, shape_data
-from playground._raw import c_callback
+from playground._engine.query import NearestQuery, from_handle, is_sensor, shape_data
+from playground._engine.raw import c_callback
 
 __all__ = ["Found", "Reach", "nearest_by_pymunk"]
 

@@ -14,10 +14,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from playground.fields import check, param
 from playground.filters.chain import FilterChain
 from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
+from playground.params import check, param
 
 __all__ = ["PerceivedGravity", "Perception"]
 

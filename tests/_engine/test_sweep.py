@@ -12,8 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from playground import _sweep
-from playground._sweep import Sweep, nearest_by_pymunk
+from playground._engine import sweep
+from playground._engine.sweep import Sweep, nearest_by_pymunk
 
 RING_SEGMENTS = 64
 """A ring of chords, where pymunk's segment_query_first picks a farther chord's end cap."""
@@ -21,7 +21,7 @@ RING_RADIUS = 3.5
 """The ring's radius, m."""
 
 
-def _bits(hit: _sweep.Hit | None) -> tuple[int, bytes] | None:
+def _bits(hit: sweep.Hit | None) -> tuple[int, bytes] | None:
     """The hit's shape (by identity) and its floats' IEEE 754 bytes."""
     if hit is None:
         return None
@@ -112,7 +112,7 @@ def test_inside_a_ring_the_nearest_chord_not_pymunks_first() -> None:
 
 def test_without_cffi_callbacks_the_sweep_asks_pymunk(monkeypatch: pytest.MonkeyPatch) -> None:
     space, shape_filter = _scene(3)
-    sweep = Sweep(space, shape_filter)
-    fast = sweep.nearest(0.0, 3.0, 0.0, 3.6, 0.25)
-    monkeypatch.setattr(_sweep, "_callback", None)
-    assert fast is not None and _bits(sweep.nearest(0.0, 3.0, 0.0, 3.6, 0.25)) == _bits(fast)
+    probe = Sweep(space, shape_filter)
+    fast = probe.nearest(0.0, 3.0, 0.0, 3.6, 0.25)
+    monkeypatch.setattr(sweep, "_callback", None)
+    assert fast is not None and _bits(probe.nearest(0.0, 3.0, 0.0, 3.6, 0.25)) == _bits(fast)

@@ -1,11 +1,11 @@
 """The shared plumbing of the nearest-hit queries: a query's handle leads back to its
-best-so-far list (where cffi refuses a callback: tests/test_raw.py)."""
+best-so-far list (where cffi refuses a callback: tests/_engine/test_raw.py)."""
 
 from __future__ import annotations
 
 import pymunk
 
-from playground._query import NearestQuery, from_handle
+from playground._engine.query import NearestQuery, from_handle
 
 
 def test_the_handle_leads_to_the_best_so_far() -> None:

@@ -9,7 +9,7 @@ from typing import Literal
 
 import pytest
 
-from playground.fields import check, param, spec
+from playground.params import check, param, spec
 
 
 @dataclass(frozen=True)

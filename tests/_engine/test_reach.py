@@ -13,14 +13,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from playground import _reach
-from playground._reach import Reach, nearest_by_pymunk
+from playground._engine import reach
+from playground._engine.reach import Reach, nearest_by_pymunk
 
 BODIES = 6
 """The bodies of a scene (the first one is the ground the query passes over)."""
 
 
-def _bits(found: _reach.Found | None) -> tuple[int, bytes] | None:
+def _bits(found: reach.Found | None) -> tuple[int, bytes] | None:
     """The find's shape (by identity) and its floats' IEEE 754 bytes."""
     if found is None:
         return None
@@ -112,7 +112,7 @@ def test_of_equally_near_shapes_the_first_wins_and_the_rest_are_passed() -> None
 
 def test_without_cffi_callbacks_the_reach_asks_pymunk(monkeypatch: pytest.MonkeyPatch) -> None:
     space, shape_filter, bodies = _scene(3)
-    reach = Reach(space, shape_filter)
-    fast = reach.nearest(0.0, 0.0, 3.0, bodies[0])
-    monkeypatch.setattr(_reach, "_callback", None)
-    assert fast is not None and _bits(reach.nearest(0.0, 0.0, 3.0, bodies[0])) == _bits(fast)
+    arm = Reach(space, shape_filter)
+    fast = arm.nearest(0.0, 0.0, 3.0, bodies[0])
+    monkeypatch.setattr(reach, "_callback", None)
+    assert fast is not None and _bits(arm.nearest(0.0, 0.0, 3.0, bodies[0])) == _bits(fast)

@@ -1,9 +1,10 @@
-"""Declared fields: a config's doc, unit and bounds as dataclass field metadata, and one check.
+"""Declared parameters: a config's doc, unit and bounds as dataclass metadata, and one check.
 
 Each frozen config of the core (``WorldConfig``, ``Perception``, ``ControllerConfig``, the gravity
-fields, the paths, ``Intent``) declares its fields once, with :func:`param`; its ``__post_init__``
-calls :func:`check`, which refuses a value outside the declared bounds with an error naming the
-field. The level format derives its tables from the same declarations (``playground.level``).
+fields, the paths, ``Intent``) declares its parameters once, with :func:`param`; its
+``__post_init__`` calls :func:`check`, which refuses a value outside the declared bounds with an
+error naming the parameter. The level format derives its tables from the same declarations
+(``playground.level``).
 
 >>> from dataclasses import dataclass
 >>> @dataclass(frozen=True)
@@ -36,7 +37,7 @@ SPEC = "playground.spec"
 
 @dataclasses.dataclass(frozen=True, slots=True)
 class Spec:
-    """What one field is: its doc, its unit and the bounds of each number in it.
+    """What one parameter is: its doc, its unit and the bounds of each number in it.
 
     ``ge``/``gt`` and ``le`` bound a number, or each component of a vector, or each point of a
     list of points. ``nonzero`` refuses 0 (a number) or (0, 0) (a vector); ``min_items`` is the
