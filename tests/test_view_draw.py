@@ -150,13 +150,13 @@ def test_scope_mg_line_stays_up_after_a_spike() -> None:
     surf.fill((0, 0, 0))
     rect = pygame.Rect(0, 0, 800, 120)
     font = pygame.font.Font(None, 20)
-    top = draw_scope(surf, font, scope, rect)
-    assert top < 10.0 * mg
+    layout = draw_scope(surf, font, scope, rect)
+    assert layout.top < 10.0 * mg
     arr = pygame.surfarray.array3d(surf).astype(int)
     line = np.abs(arr - np.array(LINE_MG)).max(axis=2) == 0
     rows = np.nonzero(line[400:700, :].sum(axis=0) > 100)[0]
     assert rows.size == 1, rows
-    plot_top, plot_bottom = rect.y + 4, rect.y + 4 + rect.height - 22
+    plot_top, plot_bottom = layout.plot.top, layout.plot.bottom
     height = (plot_bottom - rows[0]) / (plot_bottom - plot_top)
     assert height >= MIN_MG_HEIGHT, height
     spike = np.abs(arr - np.array(COLOURS["support"])).max(axis=2) <= 8

@@ -231,3 +231,64 @@ def test_replay_as_level_inputs_reproduces_the_session() -> None:
         scene.world.step()
     show = Show(name=level, world=scene.world, title="")
     assert state(show) == state(app.session.show)
+
+
+# -- issue 26's defects, each on the level it was seen in ----------------------------------------
+
+
+def _key(app: App, key: int, *, up: bool = True) -> None:
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=key))
+    if up:
+        app.handle(pygame.event.Event(pygame.KEYUP, key=key))
+
+
+def test_taking_over_a_scripted_grip_keeps_hanging() -> None:
+    """flying_whale: a D tap at 1.6 s, while the script hangs on, keeps the player hanging; the
+    first E then lets go (defect: the tap dropped the grip, and the first E did nothing)."""
+    app = App(show_level, "flying_whale", levels=LEVELS, size=SIZE)
+    ctrl = app.session.show.controllers["player"]
+    app.run_frames(round(1.6 * 60))
+    assert ctrl.joint is not None
+    _key(app, pygame.K_d)
+    app.run_frames(30)
+    assert ctrl.joint is not None and ctrl.state.value == "hanging"
+    _key(app, pygame.K_e)
+    app.run_frames(30)
+    assert ctrl.joint is None
+
+
+def test_a_level_looks_the_same_however_it_is_reached() -> None:
+    """Every level's overlays, camera and roll are its own after PgDn from any other level
+    (defect: incline → moving_platform kept incline's overlays and drew no arrows)."""
+    for before, after in (("incline", "moving_platform"), ("crusher", "null_enemy")):
+        app = App(show_level, before, levels=[before, after], size=SIZE)
+        app.run_frames(3)
+        _key(app, pygame.K_4)  # an overlay the next level does not ask for
+        _key(app, pygame.K_PAGEDOWN)
+        direct = App(show_level, after, levels=LEVELS, size=SIZE)
+        assert app.level == after
+        assert app.overlay == direct.overlay
+        assert (app.camera.zoom, app.camera.centre, app.roll) == (
+            direct.camera.zoom,
+            direct.camera.centre,
+            direct.roll,
+        )
+        assert app.overlay != App(show_level, before, size=SIZE).overlay
+
+
+def test_the_scopes_spike_label_leaves_its_title_readable() -> None:
+    """crusher: the 22941 N landing spike's value is drawn clear of the scope's title, whose
+    pixels stay its own dim text on the panel (defect: the value was written over the title)."""
+    app = App(show_level, "crusher", levels=LEVELS, size=(1280, 720))
+    app.run_frames(90)
+    app.render()
+    layout = app.hud.scope_layout
+    assert layout is not None and layout.spike is not None, "the spike is clipped and labelled"
+    assert not layout.spike.colliderect(layout.title)
+    arr = pygame.surfarray.array3d(app.surface).astype(int)
+    r = layout.title
+    region = arr[r.left : r.right, r.top : r.bottom].reshape(-1, 3)
+    support = np.abs(region - np.array(COLOURS["support"])).max(axis=1) <= COLOUR_TOL
+    assert not support.any()
+    dim = np.abs(region - np.array(COLOURS["dim"])).max(axis=1) <= COLOUR_TOL
+    assert dim.sum() >= MIN_PIXELS, "the title is written"

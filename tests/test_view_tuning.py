@@ -148,3 +148,23 @@ def test_world_time_after_a_dt_change_is_epoch_plus_steps_times_dt() -> None:
     world.run(1.0)
     assert world.steps == 150
     assert world.time == pytest.approx(2.0, abs=TOL_TIME_S)
+
+
+def test_a_held_slider_follows_the_drag_across_frames() -> None:
+    """Law: pressed at 20 % of the hover damping track and dragged to 70 % with frames run in
+    between (each applying the change), the slider ends where the mouse is (defect: applying a
+    change dropped the held slider, so a drag stayed at its first value)."""
+    app = panel_app()
+    slider = next(s for s in SLIDERS if s.field == "hover_damping")
+    track = app.tuning._tracks["hover_damping"]
+    at = [round(track.x + f * track.width) for f in (0.2, 0.35, 0.5, 0.7)]
+    app.handle(pygame.event.Event(pygame.MOUSEBUTTONDOWN, button=1, pos=(at[0], track.centery)))
+    for x in at[1:]:
+        app.frame(1.0 / 60.0)
+        app.render()
+        move = pygame.event.Event(pygame.MOUSEMOTION, pos=(x, track.centery), buttons=(1, 0, 0))
+        app.handle(move)
+    app.frame(1.0 / 60.0)
+    app.handle(pygame.event.Event(pygame.MOUSEBUTTONUP, button=1, pos=(at[-1], track.centery)))
+    expected = slider.value((at[-1] - track.x) / track.width)
+    assert app.session.player.config.hover_damping == pytest.approx(expected, rel=1e-12)

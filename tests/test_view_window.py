@@ -23,6 +23,7 @@ import pytest
 from playground.view.app import ZOOM_STEP
 from playground.view.draw import COLOURS
 from playground.view.overlay import OVERLAY_KEYS
+from playground.view.tuning import SLIDERS
 
 WINDOW_TIMEOUT = 120.0
 """s: a 60-frame run takes ~5 s here; the margin covers a loaded CI machine."""
@@ -99,7 +100,10 @@ def test_real_x_events_toggle_overlays_drag_a_crate_move_a_slider_and_zoom(
     """Law: X key presses flip each overlay; an X mouse press on the crate and moves 2.5 m up
     lift it there, held by a pull equal to its weight and drawn in the mouse's colour; a click on
     the 1€ min_cutoff slider's track changes the world's filter, and the knob is drawn there; a
-    wheel notch zooms by one step; resizing the window resizes what the app draws."""
+    drag on the hover damping slider ends where the mouse let go; a wheel notch zooms by one
+    step; resizing the window resizes what the app draws; PgDn from incline gives
+    moving_platform its own overlays (its arrows drawn); a D tap while flying_whale's script
+    hangs on keeps hanging."""
     env = {k: v for k, v in os.environ.items() if k not in ("SDL_VIDEODRIVER", "DISPLAY")}
     driver = Path(__file__).with_name("window_driver.py")
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x800x24", sys.executable, str(driver)]
@@ -138,6 +142,18 @@ def test_real_x_events_toggle_overlays_drag_a_crate_move_a_slider_and_zoom(
     knob = pixels[kx - 6 : kx + 7, ky - 6 : ky + 7]
     text = np.abs(knob - np.array(COLOURS["text"])).max(axis=2) <= COLOUR_TOL
     assert text.sum() >= MIN_PIXELS
+
+    drag = report["slider_drag"]
+    x0, width = drag["track"]
+    slider = next(s for s in SLIDERS if s.field == "hover_damping")
+    damping = slider.value((drag["to"] - x0) / width)
+    assert drag["damping"] == pytest.approx(damping, rel=1e-12), "the knob followed the drag"
+
+    level = report["level_change"]
+    assert level["level"] == "moving_platform" and level["overlay"] == ["vectors"]
+    assert {"support", "gravity", "drive"} <= set(level["drawn"])
+
+    assert report["takeover"] == {"hanging": True, "state": "hanging"}
 
     before, after = report["zoom"]
     assert after == pytest.approx(before * ZOOM_STEP)

@@ -4,10 +4,11 @@ XTEST extension), for tests/test_view_window.py. Run under Xvfb::
     xvfb-run -a python tests/window_driver.py OUT_DIR
 
 It opens ``sandbox`` in a window, then — each step checked before the next — toggles every
-overlay key, drags the crate up with the mouse, opens the tuning panel and moves a slider,
-zooms with the wheel and resizes the window. It writes what it saw to ``OUT_DIR/window.json``
-and the window's pixels after the drag and after the slider to ``OUT_DIR/drag.png`` and
-``OUT_DIR/slider.png``.
+overlay key, drags the crate up with the mouse, opens the tuning panel, clicks one slider and
+drags another, zooms with the wheel, resizes the window, goes from ``incline`` to the next level
+with PgDn and taps D while ``flying_whale``'s script hangs on. It writes what it saw to
+``OUT_DIR/window.json`` and the window's pixels after the drag, the slider and the level change
+to ``OUT_DIR/drag.png``, ``OUT_DIR/slider.png`` and ``OUT_DIR/level.png``.
 """
 
 from __future__ import annotations
@@ -117,6 +118,24 @@ def main(out: Path) -> int:
     }
     shot("slider.png")
 
+    # A drag on the hover damping slider: the held knob follows the mouse across frames.
+    track = app.tuning._tracks["hover_damping"]
+    xs = [track.x + round(f * track.width) for f in (0.2, 0.35, 0.5, 0.7)]
+    xdo("mousemove", "--window", wid, str(xs[0]), str(track.centery))
+    xdo("mousedown", "1")
+    until("the slider press", lambda: app.tuning._held == "hover_damping")
+    for x in xs[1:]:
+        xdo("mousemove", "--window", wid, str(x), str(track.centery))
+        pump(3)
+    xdo("mouseup", "1")
+    until("the slider release", lambda: app.tuning._held is None)
+    pump(2)
+    report["slider_drag"] = {
+        "track": [track.x, track.width],
+        "to": xs[-1],
+        "damping": app.session.player.config.hover_damping,
+    }
+
     # The wheel zooms.
     zoom = app.camera.zoom
     xdo("mousemove", "--window", wid, str(SIZE[0] // 2), str(SIZE[1] // 2), "click", "4")
@@ -128,6 +147,36 @@ def main(out: Path) -> int:
     until("the resize", lambda: app.size == RESIZED)
     pump(2)
     report["resized"] = [list(app.size), list(app.surface.get_size()), list(app.camera.size)]
+
+    # A level reached with PgDn looks as it does started directly: incline's contacts-only
+    # overlays do not carry over to moving_platform.
+    app.start("incline")
+    pump(5)
+    xdo("key", "--clearmodifiers", "Next")
+    until("the next level", lambda: app.level == "moving_platform")
+    pump(30)
+    report["level_change"] = {
+        "level": app.level,
+        "overlay": [
+            f
+            for f in ("vectors", "contacts", "joints", "reactions", "perceived")
+            if getattr(app.overlay, f)
+        ],
+        "drawn": sorted(app.painter.drawn),
+    }
+    shot("level.png")
+
+    # Taking over a scripted grip: a D tap at 1.6 s keeps the player hanging from the whale.
+    app.start("flying_whale")
+    ctrl = app.session.show.controllers["player"]
+    until("1.6 s of flying_whale", lambda: app.world.time >= 1.6)
+    xdo("key", "--clearmodifiers", "d")
+    until("the takeover", lambda: app.session.keyboard.touched)
+    pump(30)
+    report["takeover"] = {
+        "hanging": ctrl.joint is not None,
+        "state": ctrl.state.value,
+    }
 
     (out / "window.json").write_text(json.dumps(report, indent=1), encoding="utf-8")
     pygame.display.quit()

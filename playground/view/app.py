@@ -113,7 +113,7 @@ class App:
             size=self.size, pixels_per_metre=show.pixels_per_metre, centre=show.camera
         )
         self.roll = show.roll
-        self.painter = Painter(show.overlays(self.painter.overlay))
+        self.painter = Painter(show.overlays())
         self.scope = scope_on(world, show.watched(), 4.0, world.config.dt)
         self.selected = None
         self.pointer = Pointer()
@@ -189,7 +189,6 @@ class App:
         return self.session.show.watched()
 
     def _key(self, key: int) -> None:
-        kb = self.session.keyboard
         if key == pygame.K_ESCAPE:
             self.running = False
         elif key == pygame.K_r:
@@ -225,7 +224,7 @@ class App:
             shot = self.screenshot(Path(f"playground-{self.level}-{self.world.steps:06d}.png"))
             print(f"playground play: screenshot saved to {shot.resolve()}", file=sys.stderr)
         else:
-            kb.key_down(key)
+            self.session.key_down(key)
 
     # -- time ------------------------------------------------------------------------------------
 
@@ -320,8 +319,7 @@ class App:
         if knobs.dt != dt:
             self.scope = scope_on(self.world, self.scope.name, self.scope.seconds, knobs.dt)
         self.session.altered.add("live tuning")
-        self.tuning.show(self._knobs())
-        self.tuning.changed = False
+        self.tuning.applied(self._knobs())
 
     def screenshot(self, path: Path) -> Path:
         """Save the current picture (type from the suffix: .png, .bmp, .tga, .jpg), whole or not

@@ -26,6 +26,7 @@ __all__ = [
     "controller_forces",
     "ending_at",
     "joint_forces",
+    "joints_on",
     "perceived",
     "reactions",
     "vectors",
@@ -154,14 +155,15 @@ def joint_forces(
     if not all(math.isfinite(v) for v in vector):
         vector = reading.engine if not touching else (math.nan, math.nan)
     out: list[ScreenArrow] = []
-    for c in body.constraints:
+    joints = joints_on(world, body)
+    for c in joints:
         which = "a" if c.a is body else "b"
         local = getattr(c, "anchor_" + which, None)
         if local is None:
             continue
         p = body.local_to_world(local)
         magnitude = abs(c.impulse) / h
-        if all(math.isfinite(v) for v in vector) and len(body.constraints) == 1:
+        if all(math.isfinite(v) for v in vector) and len(joints) == 1:
             out += arrow(cam, (p.x, p.y), vector, body.mass, w_px, "joint_force", 3)
         if magnitude >= LABEL_MIN_N:
             text = f"{magnitude:.0f} N"
@@ -170,6 +172,13 @@ def joint_forces(
             surf.blit(label, (sp[0] + 8, sp[1] - 16))
             drawn.add("joint_force")
     return out
+
+
+def joints_on(world: World, body: pymunk.Body) -> list[pymunk.Constraint]:
+    """The joints in the world that act on ``body``. Walks the space's constraints:
+    ``body.constraints`` keeps a joint after ``space.remove(joint)`` (pymunk 7.3.1), so a
+    released grip would still be drawn."""
+    return [c for c in world.space.constraints if c.a is body or c.b is body]
 
 
 def reactions(cam: Camera, ctrl: Any, body: pymunk.Body, w_px: float) -> list[ScreenArrow]:

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 import pygame
 
 from playground.view.draw import COLOURS
-from playground.view.scope import Scope, draw_scope
+from playground.view.scope import Scope, ScopeLayout, draw_scope
 from playground.world.schedule import Stage, StageTiming
 
 __all__ = ["Hud", "HudInfo", "StageCosts"]
@@ -70,6 +70,8 @@ class Hud:
         self.font = font
         self.small = small
         self.rects: list[pygame.Rect] = []
+        self.scope_layout: ScopeLayout | None = None
+        """Where the scope's parts were drawn last frame (None: no scope)."""
 
     def _panel(
         self,
@@ -101,6 +103,7 @@ class Hud:
     def draw(self, surf: pygame.Surface, info: HudInfo, scope: Scope | None) -> None:
         """Draw the status panel (top left) and the scope strip (bottom)."""
         self.rects = []
+        self.scope_layout = None
         title = self.font.render(info.title, True, TEXT)
         lines: list[tuple[str, tuple[int, int, int]]] = []
         status = "PAUSED" if info.paused else f"×{info.speed:g}"
@@ -123,10 +126,10 @@ class Hud:
 
     def _scope(self, surf: pygame.Surface, scope: Scope) -> None:
         sw, sh = surf.get_size()
-        height = max(min(110, sh // 5), 40)
+        height = max(min(120, sh // 5), 56)
         rect = pygame.Rect(MARGIN, sh - height - MARGIN, sw - 2 * MARGIN, height)
         self._panel(surf, rect)
-        draw_scope(surf, self.small, scope, rect)
+        self.scope_layout = draw_scope(surf, self.small, scope, rect)
 
     def draw_help(
         self, surf: pygame.Surface, lines: Sequence[tuple[str, str]], about: str = ""

@@ -56,12 +56,27 @@ class Keyboard:
         """Whether any player key was pressed yet (until then a level's script plays)."""
         self.grab = False
         self.flipped = False
+        self._tapped: set[int] = set()
         self._flip_pending = False
         self._restore_pending = False
         self._nullify_pending = False
 
+    def take_over(self, playing: Intent) -> None:
+        """Take over from the intent a script was ``playing``: the held toggles (the grab)
+        start as it held them, so the first key changes only what it is meant to (a tap of D
+        while a script hangs on keeps hanging).
+
+        >>> kb = Keyboard()
+        >>> kb.take_over(Intent(grab=True)); kb.key_down(pygame.K_d)
+        >>> kb.intent(None, None).grab
+        True
+        """
+        self.grab = playing.grab
+
     def key_down(self, key: int) -> None:
         self.held.add(key)
+        # Seen by the next intent even if it is released before that (a tap shorter than a frame).
+        self._tapped.add(key)
         self.touched = True
         if key == pygame.K_e:
             self.grab = not self.grab
@@ -77,24 +92,28 @@ class Keyboard:
     def key_up(self, key: int) -> None:
         self.held.discard(key)
 
-    def _axis(self, minus: tuple[int, ...], plus: tuple[int, ...]) -> float:
-        return float(any(k in self.held for k in plus)) - float(any(k in self.held for k in minus))
+    @staticmethod
+    def _axis(down: set[int], minus: tuple[int, ...], plus: tuple[int, ...]) -> float:
+        return float(any(k in down for k in plus)) - float(any(k in down for k in minus))
 
     def intent(self, gravity: tuple[float, float] | None, target: str | None) -> Intent:
         """The intent now. ``gravity``: the gravity at the player (m/s²), used to flip it;
-        ``target``: the body to nullify when X was pressed. One-shot actions are consumed."""
+        ``target``: the body to nullify when X was pressed. One-shot actions are consumed, and
+        so are taps: a key pressed since the last intent counts as held for this one."""
         flip: tuple[float, float] | None = None
         if self._flip_pending and gravity is not None and gravity != (0.0, 0.0):
             flip = (-gravity[0], -gravity[1])
         restore = self._restore_pending
         nullify = target if self._nullify_pending else None
         self._flip_pending = self._restore_pending = self._nullify_pending = False
+        down = self.held | self._tapped
+        self._tapped = set()
         return Intent(
-            move=self._axis((pygame.K_a, pygame.K_LEFT), (pygame.K_d, pygame.K_RIGHT)),
-            jump=pygame.K_SPACE in self.held,
+            move=self._axis(down, (pygame.K_a, pygame.K_LEFT), (pygame.K_d, pygame.K_RIGHT)),
+            jump=pygame.K_SPACE in down,
             grab=self.grab,
-            push=pygame.K_f in self.held,
-            climb=self._axis((pygame.K_s, pygame.K_DOWN), (pygame.K_w, pygame.K_UP)),
+            push=pygame.K_f in down,
+            climb=self._axis(down, (pygame.K_s, pygame.K_DOWN), (pygame.K_w, pygame.K_UP)),
             gravity=flip,
             restore_gravity=restore,
             nullify=nullify,

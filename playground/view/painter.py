@@ -76,6 +76,8 @@ class Painter:
         self.scale_px = 0.0
         self.scale_body: str | None = None
         self.scale_newtons = 0.0
+        self.scale_weighs = True
+        """Whether the scale body feels gravity (else the scale bar is not called a weight)."""
         self.compass_rect: pygame.Rect | None = None
         """Where the compass was drawn last frame (None: not drawn)."""
         self.compass_centre: Vec = (0.0, 0.0)
@@ -125,6 +127,7 @@ class Painter:
             if name == focus or self.scale_body is None:
                 self.scale_body, self.scale_px = name, w_px
                 self.scale_newtons = body.mass * G0
+                self.scale_weighs = math.hypot(*world.gravity_at(name)) > 0.0
             ctrl = controllers.get(name)
             if ov.vectors:
                 arrows += vectors(cam, world, name, body, ctrl, peaks.get(name), w_px)
@@ -167,14 +170,12 @@ class Painter:
             if k in self.drawn
         ]
         if any(k in self.drawn for k in WEIGHED) and self.scale_body is not None:
-            entries.append(
-                LegendEntry(
-                    "text",
-                    f"m·g of {self.scale_body} ({self.scale_newtons:.0f} N)",
-                    "scale",
-                    self.scale_px,
-                )
+            text = (
+                f"m·g of {self.scale_body} ({self.scale_newtons:.0f} N)"
+                if self.scale_weighs
+                else f"scale {self.scale_newtons:.0f} N (no gravity on {self.scale_body})"
             )
+            entries.append(LegendEntry("text", text, "scale", self.scale_px))
         return entries
 
     def draw_legend(

@@ -19,16 +19,16 @@ the height.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import pygame
 from numpy.typing import NDArray
 
-from playground.view.arrows import G0
 from playground.view.draw import COLOURS
 from playground.world.world import World
 
-__all__ = ["Scope", "draw_scope", "scope_on", "scope_top"]
+__all__ = ["Scope", "ScopeLayout", "draw_scope", "scope_on", "scope_top"]
 
 SCALE_QUANTILE = 0.97  # the top follows this quantile of the window: 3 % of it may clip
 HEADROOM = 1.25  # … times this
@@ -102,13 +102,12 @@ class Scope:
 
 def scope_on(world: World, name: str | None, seconds: float, dt: float) -> Scope:
     """A scope of ``seconds`` at step ``dt`` on the body ``name`` with its weight m·g as the
-    reference line (N; g₀ where it feels no gravity), or on nobody if ``name`` is not in
-    ``world``."""
+    reference line (N; none where it feels no gravity: there is no weight to compare with), or
+    on nobody if ``name`` is not in ``world``."""
     if name is None or name not in world.names:
         return Scope(seconds=seconds, dt=dt)
     g = math.hypot(*world.gravity_at(name))
-    weight = world.body(name).mass * (g if g > 0.0 else G0)
-    return Scope(seconds=seconds, dt=dt, name=name, weight=weight)
+    return Scope(seconds=seconds, dt=dt, name=name, weight=world.body(name).mass * g)
 
 
 def scope_top(values: NDArray[np.float64], weight: float) -> float:
@@ -120,12 +119,27 @@ def scope_top(values: NDArray[np.float64], weight: float) -> float:
     return HEADROOM * q if q > 0.0 else 1.0
 
 
+@dataclass(frozen=True, slots=True)
+class ScopeLayout:
+    """Where :func:`draw_scope` put things (px): the plot, the title line above it, the clipped
+    spike's value (None: no spike clipped), and the force at the plot's top, N."""
+
+    plot: pygame.Rect
+    title: pygame.Rect
+    spike: pygame.Rect | None
+    top: float
+
+
 def draw_scope(
     surf: pygame.Surface, font: pygame.font.Font, scope: Scope, rect: pygame.Rect
-) -> float:
-    """Draw the scope into ``rect`` (its panel already drawn); returns the force at the top, N."""
+) -> ScopeLayout:
+    """Draw the scope into ``rect`` (its panel already drawn); returns where things went.
+
+    The title has its own line above the plot, so nothing drawn in the plot (a clipped spike's
+    value sits at the plot's top) can cover it."""
     raw, filt = scope.raw, scope.filtered
-    plot = pygame.Rect(rect.x + 46, rect.y + 4, rect.width - 52, rect.height - 22)
+    line = font.get_linesize()
+    plot = pygame.Rect(rect.x + 46, rect.y + line + 4, rect.width - 52, rect.height - line - 22)
     top = scope_top(np.concatenate([raw, filt]), scope.weight)
 
     def y_of(v: float) -> float:
@@ -143,15 +157,13 @@ def draw_scope(
         left = min(x - label.get_width() // 2, plot.right - label.get_width())
         surf.blit(label, (left, plot.bottom + 2))
     pygame.draw.line(surf, COLOURS["dim"], (plot.x, plot.bottom), (plot.right, plot.bottom))
-    top_label = font.render(f"{top:.0f} N", True, COLOURS["dim"])
-    surf.blit(top_label, (rect.x + 4, plot.y))
+    surf.blit(font.render(f"{top:.0f} N", True, COLOURS["dim"]), (rect.x + 4, plot.y))
     surf.blit(font.render("0", True, COLOURS["dim"]), (rect.x + 4, plot.bottom - 8))
     title = f"{scope.name}: |support| raw (thin) / filtered (thick), N"
-    surf.blit(
-        font.render(title, True, COLOURS["dim"]), (rect.x + top_label.get_width() + 16, plot.y)
-    )
+    text = font.render(title, True, COLOURS["dim"])
+    title_rect = surf.blit(text, (plot.x, rect.y + 2))
     if raw.size < 2:
-        return top
+        return ScopeLayout(plot, title_rect, None, top)
     xs = plot.right - (raw.size - 1 - np.arange(raw.size)) * per_px
     for data, colour, width in (
         (raw, COLOURS["support"], 1),
@@ -167,16 +179,17 @@ def draw_scope(
         surf.blit(font.render("m·g", True, LINE_MG), (rect.x + 4, y - 8))
     # The largest clipped spike, with its value, where it happened.
     over = np.nonzero(raw > top)[0]
+    spike: pygame.Rect | None = None
     if over.size:
         i = int(over[np.argmax(raw[over])])
         x = float(xs[i])
-        text = font.render(f"{raw[i]:.0f} N", True, COLOURS["support"])
+        value = font.render(f"{raw[i]:.0f} N", True, COLOURS["support"])
         pygame.draw.polygon(
             surf, COLOURS["support"], [(x, plot.y), (x - 4, plot.y + 6), (x + 4, plot.y + 6)]
         )
-        left = min(max(x - text.get_width() / 2, plot.x), plot.right - text.get_width())
-        # On its own dark box: the value reads over the traces and the title.
-        box = text.get_rect(topleft=(round(left), plot.y + 7)).inflate(4, 0)
-        surf.fill(COLOURS["background"], box)
-        surf.blit(text, (left, plot.y + 7))
-    return top
+        left = min(max(x - value.get_width() / 2, plot.x), plot.right - value.get_width())
+        # On its own dark box: the value reads over the traces.
+        spike = value.get_rect(topleft=(round(left), plot.y + 7)).inflate(4, 0)
+        surf.fill(COLOURS["background"], spike)
+        surf.blit(value, (left, plot.y + 7))
+    return ScopeLayout(plot, title_rect, spike, top)

@@ -55,10 +55,12 @@ class Show:
     roll: bool = False
     scene: Any = None
 
-    def overlays(self, current: Overlay) -> Overlay:
-        """The overlays the level asks for in its ``[view]`` table (else ``current``)."""
+    def overlays(self) -> Overlay:
+        """The overlays the level asks for in its ``[view]`` table (else the default: force
+        vectors and the compass), whatever was on before: a level looks the same however it
+        is reached."""
         names = getattr(getattr(getattr(self.scene, "level", None), "view", None), "overlays", None)
-        return Overlay.from_names(names) if names is not None else current
+        return Overlay.from_names(names) if names is not None else Overlay()
 
     def watched(self) -> str | None:
         """The body the HUD and the scope watch unless one is selected: the player; else the body
@@ -127,6 +129,13 @@ class Session:
             if role == "enemy" and name != p and self.world.gravity_rule(name).scale != 0.0
         ]
         return nearest((here.x, here.y), candidates)
+
+    def key_down(self, key: int) -> None:
+        """A player key went down. The first one takes over from the level's script, keeping
+        what the script held (see :meth:`Keyboard.take_over`)."""
+        if not self.keyboard.touched and self.script is not None and self.playback is None:
+            self.keyboard.take_over(self.current)
+        self.keyboard.key_down(key)
 
     def input_hook(self, world: World) -> None:
         """INPUTS stage: the player's intent for this step (keyboard or replay), recorded."""

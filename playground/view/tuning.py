@@ -174,9 +174,15 @@ class TuningPanel:
         self._held: str | None = None
 
     def show(self, knobs: Knobs) -> None:
-        """Show ``knobs`` (the world's values now), forgetting any drag in progress."""
+        """Show ``knobs`` (a fresh level's values), forgetting any drag in progress."""
         self.knobs = knobs
         self._held = None
+
+    def applied(self, knobs: Knobs) -> None:
+        """Show ``knobs``, the world's values once the panel's change was applied; a drag in
+        progress goes on (the held slider keeps following the mouse)."""
+        self.knobs = knobs
+        self.changed = False
 
     def _rows(self) -> list[Slider]:
         k = self.knobs

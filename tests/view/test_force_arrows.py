@@ -48,3 +48,34 @@ def test_controller_forces_act_at_the_probe_point() -> None:
     out, at = controller_forces(ctrl)
     assert out == {"hover": (0.0, 700.0), "drive": (50.0, 0.0), "push": (1.0, 2.0)}
     assert at == {"hover": (1.0, -0.5), "drive": (1.0, -0.5)}
+
+
+def test_a_joint_removed_from_the_space_is_no_longer_labelled() -> None:
+    """Law: the joint overlay draws the joints in the world, not the ones pymunk still lists on
+    the body after ``space.remove`` (defect: a released grip's "687 N" stayed at the old hand)."""
+    import pygame
+    import pymunk
+
+    from playground import World
+    from playground.view.force_arrows import joint_forces, joints_on
+
+    w = World()
+    w.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.0))
+    w.track("crate")
+    crate = w.body("crate")
+    joint = pymunk.PivotJoint(w.space.static_body, crate, (0.0, 0.5))
+    w.space.add(joint)
+    w.step()
+    cam = Camera(size=(200, 200), pixels_per_metre=50.0)
+    font = pygame.font.Font(None, 18)
+    held: set[str] = set()
+    joint_forces(pygame.Surface((200, 200)), cam, w, "crate", crate, W_PX, held, lambda: font)
+    assert joints_on(w, crate) == [joint] and held == {"joint_force"}
+    w.space.remove(joint)
+    w.step()
+    assert joint in crate.constraints, "pymunk still lists it: the overlay must not"
+    drawn: set[str] = set()
+    surf = pygame.Surface((200, 200))
+    assert joint_forces(surf, cam, w, "crate", crate, W_PX, drawn, lambda: font) == []
+    assert joints_on(w, crate) == [] and drawn == set()
+    assert not pygame.surfarray.array3d(surf).any(), "no label drawn"

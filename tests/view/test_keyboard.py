@@ -54,3 +54,30 @@ def test_the_help_lists_every_player_key() -> None:
     keys = " ".join(k for k, _ in CONTROLS)
     for name in ("A / D", "Space", "E", "F (hold)", "G", "X", "W / S"):
         assert name in keys
+
+
+def test_a_tap_shorter_than_a_frame_is_seen_once() -> None:
+    """Law: a key pressed and released before the next intent is read counts as held for that
+    one intent, and only that one (defect: a Space tap shorter than a frame was lost)."""
+    kb = Keyboard()
+    kb.key_down(pygame.K_SPACE)
+    kb.key_up(pygame.K_SPACE)
+    kb.key_down(pygame.K_d)
+    kb.key_up(pygame.K_d)
+    tapped = kb.intent(None, None)
+    assert tapped.jump and tapped.move == 1.0
+    after = kb.intent(None, None)
+    assert not after.jump and after.move == 0.0
+
+
+def test_taking_over_keeps_the_grab_the_script_held() -> None:
+    """Law: taking over from a script that holds on starts with the grab held, so a first E
+    lets go (defect: the first E did nothing, a D tap let go)."""
+    from playground.intents import Intent
+
+    kb = Keyboard()
+    kb.take_over(Intent(grab=True))
+    kb.key_down(pygame.K_d)
+    assert kb.intent(None, None).grab
+    kb.key_down(pygame.K_e)
+    assert not kb.intent(None, None).grab

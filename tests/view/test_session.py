@@ -35,13 +35,14 @@ def test_watched_is_the_player_then_the_followed_body_then_the_first_tracked() -
     assert Show(name="s", world=World(), title="S").watched() is None
 
 
-def test_overlays_come_from_the_levels_view_table_or_stay() -> None:
-    current = Overlay(vectors=False, joints=True)
+def test_overlays_come_from_the_levels_view_table_or_are_the_default() -> None:
+    """Law: a level's overlays do not depend on what was on before it (defect: a level without
+    ``[view] overlays`` kept the previous level's)."""
     plain = Show(name="s", world=World(), title="S")
-    assert plain.overlays(current) is current
+    assert plain.overlays() == Overlay()
     level = SimpleNamespace(view=SimpleNamespace(overlays=["contacts"]))
     hinted = Show(name="s", world=World(), title="S", scene=SimpleNamespace(level=level))
-    assert hinted.overlays(current) == Overlay(vectors=False, contacts=True)
+    assert hinted.overlays() == Overlay(vectors=False, contacts=True)
 
 
 def test_roles_default_to_player_and_other_unless_the_level_names_them() -> None:
