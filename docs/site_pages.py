@@ -1,0 +1,306 @@
+"""The documentation site's generated pages: the level format from the JSON Schema, the command
+line from the argparse parser, the API reference from ``playground.__all__``, and the README.
+
+MkDocs loads this file as a hook (``hooks:`` in mkdocs.yml); the page makers are plain functions
+of the project's own objects, so a test can call them without MkDocs installed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import posixpath
+import re
+from collections.abc import Iterator, Mapping
+from pathlib import Path
+from typing import Any
+
+try:
+    from griffe import Extension as _GriffeExtension
+except ImportError:  # the docs extra is not installed: the page makers still work
+    _GriffeExtension = object
+
+ROOT = Path(__file__).resolve().parent.parent
+
+API_GROUPS: dict[str, str] = {
+    "world": "The world",
+    "runner": "Running a world in a game loop",
+    "controller": "The controller",
+    "intents": "Intents",
+    "forces": "Forces",
+    "gravity": "Gravity",
+    "movers": "Movers",
+    "perception": "Perception",
+    "filters": "Filters",
+}
+"""The API reference's pages, in order: the subpackage or module under ``playground`` that defines
+an object (its ``__module__``'s second part) → the page's title."""
+
+LEADS = ("World", "Controller", "ForceSolver", "GravityField", "Mover", "PerceivedGravity")
+"""The object each API page opens with, where it has one; the rest follow alphabetically."""
+
+_ROLE = re.compile(r":(?:[a-z]+:)+`~?([^`]+)`")
+
+
+def plain(text: str) -> str:
+    """Sphinx roles as code, the way the docstrings are meant to read.
+
+    >>> plain("the :class:`~playground.World` and :mod:`playground.gravity`")
+    'the `playground.World` and `playground.gravity`'
+    """
+    return _ROLE.sub(r"`\1`", text)
+
+
+def fenced(text: str) -> str:
+    """Doctest blocks (a ``>>>`` line to the next blank line) fenced as code, roles as code: what
+    a docstring means, in Markdown.
+
+    >>> fenced("Sums:\\n>>> 1 + 1\\n2\\n\\nsee :func:`sum`.").splitlines()
+    ['Sums:', '```pycon', '>>> 1 + 1', '2', '```', '', 'see `sum`.']
+    """
+    out: list[str] = []
+    indent: str | None = None
+    for line in plain(text).split("\n"):
+        if indent is None and line.lstrip().startswith(">>>"):
+            indent = line[: len(line) - len(line.lstrip())]
+            out.append(indent + "```pycon")
+        elif indent is not None and not line.strip():
+            out.append(indent + "```")
+            indent = None
+        out.append(line)
+    if indent is not None:
+        out.append(indent + "```")
+    return "\n".join(out)
+
+
+class DocstringMarkdown(_GriffeExtension):  # type: ignore[misc, valid-type]
+    """Griffe extension (mkdocs.yml loads it): every docstring through :func:`fenced`."""
+
+    def on_instance(self, *, obj: Any, **kwargs: Any) -> None:
+        if obj.docstring is not None:
+            obj.docstring.value = fenced(obj.docstring.value)
+
+
+def _anchor(name: str) -> str:
+    return name.lower().replace("_", "-")
+
+
+def _type(spec: Mapping[str, Any]) -> str:
+    """One schema node's type, written briefly: references link to their table."""
+    if "$ref" in spec:
+        name = str(spec["$ref"]).rsplit("/", 1)[-1]
+        return f"[{name}](#{_anchor(name)})"
+    for key in ("oneOf", "anyOf"):
+        if key in spec:
+            kinds = [_type(s) for s in spec[key] if s.get("type") != "null"]
+            return " or ".join(kinds) + (" or none" if len(kinds) < len(spec[key]) else "")
+    if "enum" in spec:
+        return " \\| ".join(f"`{json.dumps(v)}`" for v in spec["enum"])
+    if "const" in spec:
+        return f"`{json.dumps(spec['const'])}`"
+    kind = spec.get("type", "any")
+    if kind == "array":
+        if "prefixItems" in spec:
+            return "[" + ", ".join(_type(s) for s in spec["prefixItems"]) + "]"
+        return "list of " + _type(spec.get("items", {}))
+    if kind == "object" and "additionalProperties" in spec:
+        extra = spec["additionalProperties"]
+        if isinstance(extra, Mapping):
+            return "table of " + _type(extra)
+    return str(kind)
+
+
+def _bounds(spec: Mapping[str, Any]) -> str:
+    parts = []
+    for key, sign in (
+        ("minimum", "≥"),
+        ("ge", "≥"),
+        ("exclusiveMinimum", ">"),
+        ("maximum", "≤"),
+        ("le", "≤"),
+        ("exclusiveMaximum", "<"),
+    ):
+        if key in spec:
+            parts.append(f"{sign} {spec[key]:g}")
+    return ", ".join(parts)
+
+
+def _cell(text: str) -> str:
+    return plain(text).replace("\n", " ").replace("|", "\\|")
+
+
+def _table(node: Mapping[str, Any]) -> Iterator[str]:
+    props: Mapping[str, Any] = node.get("properties", {})
+    required = set(node.get("required", ()))
+    yield "| key | type | unit | default | bounds | meaning |"
+    yield "|---|---|---|---|---|---|"
+    for key, spec in props.items():
+        if key in required:
+            default = "required"
+        elif "default" in spec:
+            default = f"`{json.dumps(spec['default'])}`"
+        else:
+            default = "—"
+        yield (
+            f"| `{key}` | {_type(spec)} | {spec.get('unit', '')} | {default} | {_bounds(spec)} "
+            f"| {_cell(spec.get('description', ''))} |"
+        )
+
+
+def level_format_page(schema: Mapping[str, Any]) -> str:
+    """The level format reference: the top-level keys, then one table per table kind.
+
+    >>> page = level_format_page({"title": "Level", "properties": {"seconds": {"type": "number",
+    ...     "unit": "s", "default": 3.0, "minimum": 0}}, "$defs": {}})
+    >>> "| `seconds` | number | s | `3.0` | ≥ 0 |" in page
+    True
+    """
+    lines = [
+        "# Level format",
+        "",
+        "A level is one TOML file. This page is generated from the level JSON Schema",
+        "(`playground schema`, committed as `levels/level.schema.json`); each key's unit,",
+        "default and bounds come from the core's own declarations. `playground check FILE`",
+        "applies the same rules plus the ones a schema cannot say (names that must exist,",
+        "ordered windows).",
+        "",
+        "## The file",
+        "",
+        plain(str(schema.get("description", ""))),
+        "",
+        *_table(schema),
+    ]
+    for name, node in schema.get("$defs", {}).items():
+        lines += ["", f"## {name}", "", plain(str(node.get("description", "")))]
+        if "properties" in node:
+            lines += ["", *_table(node)]
+        else:
+            lines += ["", f"Type: {_type(node)}."]
+    return "\n".join(lines) + "\n"
+
+
+def _subcommands(top: argparse.ArgumentParser) -> Iterator[tuple[str, argparse.ArgumentParser]]:
+    for action in top._actions:  # argparse keeps its subparsers only here
+        if isinstance(action, argparse._SubParsersAction):
+            yield from action.choices.items()
+
+
+def command_line_page(top: argparse.ArgumentParser) -> str:
+    """The command line reference: the parser's own help for the command and each subcommand.
+
+    >>> p = argparse.ArgumentParser(prog="tool")
+    >>> sub = p.add_subparsers()
+    >>> _ = sub.add_parser("go", help="go somewhere").add_argument("--far", help="how far, m")
+    >>> page = command_line_page(p)
+    >>> "## tool go" in page and "how far, m" in page
+    True
+    """
+    old = os.environ.get("COLUMNS")
+    os.environ["COLUMNS"] = "100"  # argparse wraps at the terminal's width: fix it for the page
+    try:
+        lines = [
+            "# Command line",
+            "",
+            f"Generated from the `{top.prog}` command's own parser; `{top.prog} COMMAND --help`",
+            "prints the same text.",
+            "",
+            "```text",
+            top.format_help().rstrip(),
+            "```",
+        ]
+        for name, sub in _subcommands(top):
+            lines += ["", f"## {top.prog} {name}", "", "```text", sub.format_help().rstrip(), "```"]
+    finally:
+        if old is None:
+            del os.environ["COLUMNS"]
+        else:
+            os.environ["COLUMNS"] = old
+    return "\n".join(lines) + "\n"
+
+
+def api_groups(names: list[str], modules: Mapping[str, str]) -> dict[str, list[str]]:
+    """The public names by API page (see :data:`API_GROUPS`); a name whose module has no page of
+    its own goes on the world's.
+
+    >>> api_groups(["Stage", "Uniform", "World"], {"Stage": "playground.world.schedule",
+    ...     "Uniform": "playground.gravity.fields", "World": "playground.world.world"})
+    {'world': ['World', 'Stage'], 'gravity': ['Uniform']}
+    """
+    groups: dict[str, list[str]] = {key: [] for key in API_GROUPS}
+    for name in names:
+        part = modules[name].split(".")[1]
+        groups[part if part in API_GROUPS else "world"].append(name)
+    return {
+        key: sorted(value, key=lambda name: (name not in LEADS, name))
+        for key, value in groups.items()
+        if value
+    }
+
+
+def api_pages() -> dict[str, str]:
+    """Every API page (path → markdown): one per group of ``playground.__all__``, and an index."""
+    import playground
+
+    names = sorted(playground.__all__)
+    modules = {name: getattr(playground, name).__module__ for name in names}
+    groups = api_groups(names, modules)
+    pages = {}
+    index = [
+        "# API reference",
+        "",
+        "Everything `import playground` offers (`playground.__all__`), from its docstrings.",
+        "",
+    ]
+    for key, members in groups.items():
+        title = API_GROUPS[key]
+        index.append(f"- [{title}]({key}.md): " + ", ".join(f"`{m}`" for m in members))
+        body = [f"# {title}", ""]
+        for member in members:
+            body += [f"::: playground.{member}", ""]
+        pages[f"api/{key}.md"] = "\n".join(body)
+    pages["api/index.md"] = "\n".join(index) + "\n"
+    return pages
+
+
+_README_LINK = re.compile(r"\]\(docs/")
+
+
+def readme_page(text: str) -> str:
+    """The README as a page of the site: its links into ``docs/`` made relative to the site.
+
+    >>> readme_page("see [it](docs/index.md)")
+    'see [it](index.md)'
+    """
+    return _README_LINK.sub("](", text)
+
+
+def generated_pages() -> dict[str, str]:
+    """Every generated page of the site: path under the site → markdown."""
+    from playground.cli.parser import parser
+
+    schema = json.loads((ROOT / "levels" / "level.schema.json").read_text(encoding="utf-8"))
+    pages = {
+        "reference/levels.md": level_format_page(schema),
+        "reference/command-line.md": command_line_page(parser()),
+        "readme.md": readme_page((ROOT / "README.md").read_text(encoding="utf-8")),
+    }
+    pages.update(api_pages())
+    return pages
+
+
+def on_files(files: Any, config: Any) -> Any:
+    """MkDocs hook: add the generated pages to the site's files."""
+    from mkdocs.structure.files import File
+
+    for path, text in generated_pages().items():
+        files.append(File.generated(config, path, content=text))
+    return files
+
+
+def on_page_markdown(markdown: str, page: Any, config: Any, files: Any) -> str:
+    """MkDocs hook: a link from a chapter to ``../README.md`` (right on GitHub) goes to the
+    site's copy of the README."""
+    here = posixpath.dirname(page.file.src_uri)
+    target = posixpath.relpath("readme.md", here or ".")
+    return re.sub(r"\]\((?:\.\./)+README\.md", f"]({target}", markdown)
