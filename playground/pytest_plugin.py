@@ -99,7 +99,7 @@ class LevelFile(pytest.File):
         except LevelError as exc:
             yield LevelItem.from_parent(self, name="load", check=None, error=str(exc))
             return
-        from playground.expectations import check_names
+        from playground.scene.checks import check_names
 
         names = check_names(level)
         self.level = level
@@ -114,8 +114,8 @@ class LevelFile(pytest.File):
 
 
 def _run(level: Level) -> dict[str, tuple[bool, str]]:
-    from playground.expectations import watch
     from playground.scene import build
+    from playground.scene.checks import watch
 
     scene = build(level)
     checks = watch(scene)

@@ -11,12 +11,12 @@ from pathlib import Path
 import pytest
 
 from playground.cli import main
-from playground.expectations import UNITS, read
 from playground.level import find, load, schema
 from playground.quantities import CHECKED, QUANTITIES, RECORDED, REPORTED, Quantity, Value, sample
-from playground.recording import COLUMNS, recording
-from playground.recording import read as read_recording
 from playground.scene import Scene, build
+from playground.scene.checks import UNITS, read
+from playground.scene.recording import COLUMNS, recording
+from playground.scene.recording import read as read_recording
 
 RECORDING_COLUMNS = (
     "time",

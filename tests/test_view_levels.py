@@ -124,7 +124,7 @@ def test_replay_of_keyboard_play_is_exact(tmp_path: Path) -> None:
 def test_drawing_leaves_the_recording_unchanged(tmp_path: Path) -> None:
     """Law: a level stepped by the view (drawing every frame) and stepped alone give identical
     recordings (the levels' own CSV recorder, floats written with repr)."""
-    from playground.recording import recording
+    from playground.scene.recording import recording
 
     level = _player_level()
     frames = 60

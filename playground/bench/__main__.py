@@ -1,7 +1,7 @@
-"""``python -m playground.bench``: see :mod:`playground.bench.cli`."""
+"""``python -m playground.bench``: see :mod:`playground.cli.bench`."""
 
 import sys
 
-from playground.bench.cli import main
+from playground.cli.bench import main
 
 sys.exit(main())

@@ -7,7 +7,7 @@ import argparse
 from collections.abc import Callable, Sequence
 
 from playground import __version__
-from playground.bench import cli as bench_cli
+from playground.cli import bench as bench_cli
 from playground.cli import breaks, levelfiles, pictures, running
 from playground.cli.exits import guarded
 

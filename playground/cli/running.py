@@ -30,11 +30,11 @@ from typing import Any
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK, EXIT_USAGE
 from playground.cli.preflight import UsageError
-from playground.guard import RunawayError
 from playground.level.files import find
 from playground.level.loading import load
 from playground.limits import MAX_DT, MAX_SECONDS, MAX_TIME, MIN_DT
 from playground.quantities import REPORTED, Value, sample
+from playground.world.guard import RunawayError
 
 __all__ = ["PROGRESS_MIN_STEPS", "cmd_run", "configure"]
 
@@ -50,9 +50,9 @@ def _vec(v: Sequence[float]) -> list[float | None] | None:
 
 def cmd_run(args: argparse.Namespace) -> int:
     """Run a level headless, report its checks (and bodies with --json); exit 1 on a failure."""
-    from playground.expectations import watch
-    from playground.recording import check_output, recording
     from playground.scene import build
+    from playground.scene.checks import watch
+    from playground.scene.recording import check_output, recording
 
     if args.record is not None:
         try:
@@ -188,7 +188,7 @@ def _progress_bar(scene: Any, seconds: float, *, enabled: bool) -> None:
 
 def _replay(file: str, name: str, scene: Any) -> float | None:
     """Let a replay drive the scene's player; the seconds it covers (None after an error)."""
-    from playground.replay import Playback, Replay, ReplayError
+    from playground.scene.replay import Playback, Replay, ReplayError
 
     try:
         replay = Replay.load(file)

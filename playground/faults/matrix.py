@@ -64,8 +64,8 @@ class Row:
 def run(level: Level, name: str, fault: str | None = None) -> Outcome:
     """Build and run ``level`` (called ``name``) to its end, under the break ``fault`` if given,
     and say which checks failed."""
-    from playground.expectations import watch
     from playground.scene import build
+    from playground.scene.checks import watch
 
     declared = fault is None or fault in level.catches
     start = time.perf_counter()

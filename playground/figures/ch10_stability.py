@@ -49,7 +49,7 @@ def hard_run(scene: str, dt: float, iterations: int = 10, substeps: int = 1) -> 
     :mod:`playground.bench.stability`); the runtime guard's stop counts as a breach too."""
     from playground.bench.stability import SCENES as HARD
     from playground.bench.stability import InvariantError, run_checked
-    from playground.guard import RunawayError
+    from playground.world.guard import RunawayError
 
     hard = HARD[scene](WorldConfig(dt=dt, iterations=iterations, substeps=substeps))
     try:
@@ -185,7 +185,7 @@ def runaway_run(guard: bool) -> tuple[Array, int, str]:
     Returns (rows of step, |x| (m), |support| (N), |perceived gravity| (m/s²); the step at which
     the runtime guard stopped it, 0 if it did not; the guard's message).
     """
-    from playground.guard import RunawayError
+    from playground.world.guard import RunawayError
 
     world = World(WorldConfig(guard=guard), gravity=(0.0, 0.0))
     body = pymunk.Body(1.0, math.inf)

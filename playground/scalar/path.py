@@ -290,7 +290,7 @@ class ScalarPath:
 
     def first_bad(self, bound: float) -> tuple[int, int] | None:
         """(row, column) of the first engine force component that is not finite or beyond
-        ``bound`` (N), as :func:`playground.guard.first_bad` on the solver's engine rows."""
+        ``bound`` (N), as :func:`playground.world.guard.first_bad` on the solver's engine rows."""
         for i, r in enumerate(self.rows):
             if not abs(r.ex) <= bound:
                 return i, 0

@@ -20,7 +20,7 @@ from typing import Any
 import pygame
 import pymunk
 
-from playground.replay import Replay
+from playground.scene.replay import Replay
 from playground.vec import Vec
 from playground.view.camera import Camera
 from playground.view.capture import save_picture

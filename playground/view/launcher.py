@@ -13,7 +13,7 @@ from typing import Any
 
 import pygame
 
-from playground.replay import Replay, ReplayError
+from playground.scene.replay import Replay, ReplayError
 from playground.view.app import App
 from playground.view.capture import GIF_FPS, GifWriter, gif_path, parse_size, picture_path
 from playground.view.clock import HEADLESS_FRAME
@@ -126,8 +126,8 @@ def play(
     instead of the keyboard. On exit the player's inputs since the last (re)start are written to
     ``replay_out`` if given.
     """
-    from playground.guard import RunawayError
     from playground.level.errors import LevelError
+    from playground.world.guard import RunawayError
 
     try:
         shot = picture_path(screenshot) if screenshot is not None else None

@@ -11,7 +11,7 @@ import math
 import pygame
 import pymunk
 
-from playground.mouse import Grab
+from playground.controller.mouse import Grab
 from playground.vec import Vec
 from playground.view.arrows import MIN_ARROW_PX, arrow_length, body_size, weight_pixels
 from playground.view.camera import Camera

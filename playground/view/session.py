@@ -14,9 +14,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from playground.controller.mouse import Grab, MouseSpring
 from playground.intents import Intent, IntentSource
-from playground.mouse import Grab, MouseSpring
-from playground.replay import Recorder, Replay
+from playground.scene.replay import Recorder, Replay
 from playground.vec import Vec
 from playground.view.keyboard import Keyboard
 from playground.view.overlay import Overlay
@@ -154,7 +154,7 @@ class Session:
 
     def pull_hook(self, world: World) -> None:
         """CONTROL stage: the mouse spring's force on the grabbed body, into the ledger as an
-        APPLIED force at the grabbed point (see :mod:`playground.mouse`)."""
+        APPLIED force at the grabbed point (see :mod:`playground.controller.mouse`)."""
         grab = self.playback.grab_at(world.steps) if self.playback is not None else self.grab
         if self.recorder is not None:
             self.recorder.record_grab(world.steps, grab)

@@ -25,13 +25,13 @@ from playground._engine.batch import BodyRows
 from playground.forces.ledger import ForceLedger
 from playground.forces.solver import ForceSolver
 from playground.gravity import PerceivedGravity
-from playground.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
 from playground.limits import RUNAWAY_FORCE
 from playground.scalar.field import PlainField
 from playground.scalar.path import FieldOnBodies, ScalarPath
 from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.gravity_stage import FieldForces
+from playground.world.guard import FORCE_BOUNDS, FORCE_COLUMNS, Runaway, first_bad
 
 __all__ = ["PhysicsStage"]
 

@@ -29,7 +29,6 @@ import pymunk.batch as batch
 
 from playground.forces.ledger import ForceLedger
 from playground.gravity import GravityField, GravityRule, Perception, Uniform
-from playground.guard import GUARD_EVERY, RunawayError, state_runaway
 from playground.limits import (
     MAX_GRAVITY,
     MAX_MASS,
@@ -44,6 +43,7 @@ from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.force_api import ForceAPI
 from playground.world.gravity_stage import GravityStage
+from playground.world.guard import GUARD_EVERY, RunawayError, state_runaway
 from playground.world.physics import PhysicsStage
 from playground.world.schedule import (
     EVENT_EARLY,

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from playground.cli import EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE, main
-from playground.recording import read
+from playground.scene.recording import read
 
 INTERRUPT_AFTER = 1.0
 """s after the command is inside ``main``: long enough to be in the middle of its work."""
@@ -68,7 +68,7 @@ def test_figure_without_matplotlib_fails_before_the_sweep(
 ) -> None:
     """``bench accuracy|overhead --figure`` without matplotlib says which extra to install, exit 2,
     before the sweep runs (the sweep is replaced by a failure here)."""
-    import playground.bench.cli as bench_cli
+    import playground.cli.bench as bench_cli
 
     def never(*args: object, **kwargs: object) -> None:
         raise AssertionError("the sweep ran before the figure's dependency was checked")
@@ -154,7 +154,7 @@ def test_ctrl_c_during_play_exits_130_and_keeps_the_replay(tmp_path: Path) -> No
     """Ctrl-C during ``play`` (headless, many frames): "interrupted", exit 130, and the replay
     of the steps played so far is written."""
     pytest.importorskip("pygame")
-    from playground.replay import Replay
+    from playground.scene.replay import Replay
 
     out = tmp_path / "session.json"
     code, err = _interrupt(

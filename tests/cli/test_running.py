@@ -75,8 +75,8 @@ def test_recordings_are_bit_identical(tmp_path: Path, suffix: str) -> None:
 
 def test_interrupted_recording_is_readable(tmp_path: Path) -> None:
     """An interrupted run (KeyboardInterrupt) still leaves a complete recording."""
-    from playground.recording import recording
     from playground.scene import build
+    from playground.scene.recording import recording
 
     for suffix in (".csv", ".npz"):
         scene = build(load(find("rest")))

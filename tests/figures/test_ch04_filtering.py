@@ -22,9 +22,9 @@ def test_exercise_4_median_of_3_removes_a_one_step_spike() -> None:
 
 def test_exercise_4_without_the_spike_stage_the_bounce_check_fails() -> None:
     """Chapter 4's exercise: with spike_filter off, the bounce level's spike check fails."""
-    from playground.expectations import watch
     from playground.level import find, load
     from playground.scene import build
+    from playground.scene.checks import watch
 
     level = load(find("bounce"))
     perception = level.tracking.perception.model_copy(update={"spike_filter": False})

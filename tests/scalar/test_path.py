@@ -15,9 +15,9 @@ import pytest
 
 from playground import Stage, World, WorldConfig
 from playground.gravity import Uniform
-from playground.guard import GUARD_EVERY
 from playground.level import find, load
 from playground.scene import build
+from playground.world.guard import GUARD_EVERY
 
 TOL_FIELD = 0.01
 """Relative: the field's force is taken where the player was when the step began; walking at

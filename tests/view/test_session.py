@@ -10,7 +10,7 @@ import pytest
 
 from playground import World
 from playground.gravity import GravityRule
-from playground.replay import Replay
+from playground.scene.replay import Replay
 from playground.view.overlay import Overlay
 from playground.view.session import Session, Show, nearest, roles_of
 

@@ -16,8 +16,8 @@ from hypothesis import strategies as st
 
 from playground import Category, Intent, World, WorldConfig
 from playground.controller import Controller
-from playground.guard import RunawayError
 from playground.limits import MAX_COORDINATE, MAX_GRAVITY, MAX_MASS
+from playground.world.guard import RunawayError
 
 NAN, INF = math.nan, math.inf
 

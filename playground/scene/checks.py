@@ -1,4 +1,4 @@
-"""Expectations: a level's checks, watched every step and judged at the end of a run.
+"""Checks: a level's expectations, watched every step of a scene and judged at the end of a run.
 
 Each :class:`playground.level.Expectation` becomes a :class:`Check` that samples one body's
 quantity in the OBSERVE stage — at a time, always or eventually within a window, or as a mean over

@@ -20,7 +20,6 @@ from typing import TYPE_CHECKING, Any
 import pymunk
 
 from playground import movers as movers_mod
-from playground.feasibility import physical_problems
 from playground.gravity import GravityRule, Uniform
 from playground.level.bodies import Actor, MoverModel, Prop
 from playground.level.derive import to_core
@@ -40,6 +39,7 @@ from playground.level.timeline import (
     SetGravity,
     Spawn,
 )
+from playground.scene.feasibility import physical_problems
 from playground.vec import Vec
 from playground.world.world import World
 

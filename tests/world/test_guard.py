@@ -12,8 +12,8 @@ import pytest
 
 from playground import World, WorldConfig
 from playground.cli import main
-from playground.guard import GUARD_EVERY, RunawayError
 from playground.world import physics as physics_mod
+from playground.world.guard import GUARD_EVERY, RunawayError
 
 STEPS = 400
 """Steps a blown-up spring is given: it is NaN within ~40 at 1/60 s."""

@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from playground.level import find, load
-from playground.recording import COLUMNS, PARTIAL, read, recording
 from playground.scene import build
+from playground.scene.recording import COLUMNS, PARTIAL, read, recording
 
 LONG_RUN_S = 600.0
 """The issue's long recording: ten simulated minutes of sandbox."""
@@ -28,7 +28,7 @@ WAIT_S = 120.0
 RECORD_BOTH = """
 import sys
 from playground.level import find, load
-from playground.recording import recording
+from playground.scene.recording import recording
 from playground.scene import build
 
 scene = build(load(find("sandbox")))

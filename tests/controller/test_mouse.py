@@ -1,5 +1,5 @@
-"""Laws of the mouse spring (:mod:`playground.mouse`) without any view: stable at any step, and
-applied to a world as APPLIED force and torque on what a grab holds."""
+"""Laws of the mouse spring (:mod:`playground.controller.mouse`) without any view: stable at any
+step, and applied to a world as APPLIED force and torque on what a grab holds."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pymunk
 import pytest
 
 from playground import Stage, World, WorldConfig
-from playground.mouse import Grab, MouseSpring
+from playground.controller.mouse import Grab, MouseSpring
 
 TOL_SETTLED_M = 0.01
 """m: beyond its static sag g/ω², a held plank is still this close to rest after 6 s (the swing

@@ -34,10 +34,10 @@ from typing import TYPE_CHECKING, Any
 import tomli_w
 from pydantic import ValidationError
 
+from playground.controller.mouse import Grab, MouseSpring
 from playground.intents import Intent
 from playground.level.explain import problems
 from playground.level.timeline import IntentTable
-from playground.mouse import Grab, MouseSpring
 from playground.world.schedule import Stage
 from playground.world.world import World
 
@@ -314,7 +314,8 @@ class Recorder:
 class Playback:
     """A replay driving a built scene headless: its actor's intent in the INPUTS stage of every
     step (after the actor's own script, which it overrides) and what the mouse held in the
-    CONTROL stage (pulled by a :class:`~playground.mouse.MouseSpring`, as the view pulls).
+    CONTROL stage (pulled by a :class:`~playground.controller.mouse.MouseSpring`, as the view
+    pulls).
 
     >>> from playground.level import find, load
     >>> from playground.scene import build

@@ -7,9 +7,9 @@ import math
 
 import pytest
 
-from playground.expectations import watch
 from playground.level import LevelError, loads
 from playground.scene import build
+from playground.scene.checks import watch
 
 TOL_ANGLE = 1e-9
 """rad: the idle player's support is m·g straight up to round-off (its hover carries it all)."""
@@ -346,7 +346,7 @@ above = 1.9
 
 
 def test_repeated_check_names_are_made_unique() -> None:
-    from playground.expectations import check_names
+    from playground.scene.checks import check_names
 
     level = loads(
         GLIDE

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from playground.bench.cli import configure
+from playground.cli.bench import configure
 
 
 def test_cli_parses_both_subcommands() -> None:

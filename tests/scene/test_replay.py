@@ -1,4 +1,4 @@
-"""Laws of replays (:mod:`playground.replay`), core and headless: a replay drives a level without
+"""Laws of replays (:mod:`playground.scene.replay`), headless: a replay drives a level without
 pygame-ce, bit for bit as with it; its intents written as a level's ``[[inputs]]`` give the same
 run; bad replay files say which entry is wrong; lookups are exact."""
 
@@ -15,11 +15,11 @@ from pathlib import Path
 import pytest
 import tomli_w
 
+from playground.controller.mouse import Grab
 from playground.intents import Intent
 from playground.level import LevelError, find, load, loads
-from playground.mouse import Grab
-from playground.replay import Playback, Replay, ReplayError
 from playground.scene import Scene, build
+from playground.scene.replay import Playback, Replay, ReplayError
 
 NO_PYGAME = (
     "import sys; sys.modules['pygame'] = None; "
@@ -121,7 +121,7 @@ def test_replay_as_level_inputs_gives_the_same_run() -> None:
     assert state(scripted) == state(played(replay))
 
 
-COMMITTED = Path(__file__).parents[1] / "docs" / "img" / "sandbox-replay.json"
+COMMITTED = Path(__file__).parents[2] / "docs" / "img" / "sandbox-replay.json"
 """A replay recorded by ``playground play`` before replays moved out of the view."""
 
 
