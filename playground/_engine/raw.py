@@ -27,6 +27,7 @@ True
 
 from __future__ import annotations
 
+import types
 from collections.abc import Callable
 from typing import Any
 
@@ -46,6 +47,7 @@ __all__ = [
     "body_id",
     "body_type",
     "c_callback",
+    "c_callback_code",
     "centre_of_gravity",
     "collision_persistence",
     "current_time_step",
@@ -211,10 +213,17 @@ def arbiter_callback(visit: Callable[[Handle, ArbiterHandle, Any], None]) -> Any
     return c_callback("void(cpBody *, cpArbiter *, void *)", visit)
 
 
+_C_CALLBACK_CODE: set[types.CodeType] = set()
+"""The code of every function called back from C through :func:`c_callback`."""
+
+
 def c_callback(c_type: str, keep: Callable[..., None]) -> Any:
     """A C callback of type ``c_type`` that calls ``keep``, or None where the platform refuses
     cffi callbacks (memory both writable and executable): the callers then fall back to pymunk's
     own iteration or query."""
+    code = getattr(keep, "__code__", None)
+    if isinstance(code, types.CodeType):
+        _C_CALLBACK_CODE.add(code)
     try:
         return _new_callback(c_type, keep)
     except (
@@ -222,6 +231,13 @@ def c_callback(c_type: str, keep: Callable[..., None]) -> Any:
         RuntimeError,
     ):  # a platform without cffi callbacks (tests/_engine/test_raw.py)
         return None
+
+
+def c_callback_code(code: types.CodeType) -> bool:
+    """Whether ``code`` is a function that C calls back through :func:`c_callback`: an exception
+    raised there is printed and dropped by cffi, never seen by the caller (a Ctrl-C handler
+    waits until Python is out of it)."""
+    return code in _C_CALLBACK_CODE
 
 
 def arbiter_handle(arb: pymunk.Arbiter) -> ArbiterHandle:

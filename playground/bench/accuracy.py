@@ -358,20 +358,43 @@ def sweep(
         return [r for rows in done for r in rows]
     own = executor is None
     pool = executor if executor is not None else ProcessPoolExecutor(workers or os.cpu_count())
+    futures: list[Future[list[Result]]] = []
     try:
-        futures: list[Future[list[Result]]] = [
-            pool.submit(measure, p, tuple(FILTERS), repeats) for p in todo
-        ]
+        futures.extend(pool.submit(measure, p, tuple(FILTERS), repeats) for p in todo)
         if bar is not None:
             for f in futures:
                 f.add_done_callback(lambda _: bar.update(1))
         rows = [r for f in futures for r in f.result()]
-    finally:
+    except BaseException:
+        # Ctrl-C (or a failed point): drop the points not started and stop the running ones,
+        # rather than wait seconds for each point already submitted.
+        for f in futures:
+            f.cancel()
+        if own:
+            _abandon(pool)
+        raise
+    else:
         if own:
             pool.shutdown()
+    finally:
         if bar is not None:
             bar.close()
     return rows
+
+
+def _abandon(pool: Executor) -> None:
+    """Shut a pool down at once: pending points cancelled, the worker processes terminated.
+
+    ``shutdown(cancel_futures=True)`` alone still lets each running point finish, and the
+    interpreter joins the workers at exit; a process pool's workers are ended here instead
+    (``_processes`` is the standard library's own map of them, absent on other executors).
+    """
+    pool.shutdown(wait=False, cancel_futures=True)
+    processes: dict[int, Any] = getattr(pool, "_processes", None) or {}
+    for process in list(processes.values()):
+        process.terminate()
+    for process in list(processes.values()):
+        process.join()
 
 
 def _progress(total: int) -> Any:

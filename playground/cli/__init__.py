@@ -7,20 +7,28 @@ code`` and an ``add(subparsers)`` that declares its arguments: :mod:`~playground
 ``figures``, ``gifs``); ``bench`` is :mod:`playground.cli.bench`. :mod:`~playground.cli.parser`
 assembles them and dispatches; :mod:`~playground.cli.exits` maps every error to a one-line message
 on stderr and an exit code, in one place: 0 ok; 1 a check failed (or a level did not validate, for
-``check``); 2 bad input or environment; 130 interrupted (Ctrl-C).
+``check``); 2 bad input or environment; 3 an internal error (the traceback written to a file); 130
+interrupted (Ctrl-C).
 
 >>> main(["check", "incline"])
 ok      incline: Incline
 0
 """
 
-from playground.cli.exits import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
+from playground.cli.exits import (
+    EXIT_FAILED,
+    EXIT_INTERNAL,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    EXIT_USAGE,
+)
 from playground.cli.levelfiles import schema_text
 from playground.cli.parser import main, parser
 from playground.cli.running import PROGRESS_MIN_STEPS
 
 __all__ = [
     "EXIT_FAILED",
+    "EXIT_INTERNAL",
     "EXIT_INTERRUPTED",
     "EXIT_OK",
     "EXIT_USAGE",

@@ -56,6 +56,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
         p.add_argument("--json", action="store_true", help="print every row as JSON on stdout")
         p.add_argument("--csv", type=Path, default=None, metavar="FILE", help="write the rows")
         p.add_argument("--figure", type=Path, default=None, metavar="PNG", help="draw the figure")
+        p.add_argument("--force", action="store_true", help="overwrite existing --csv, --figure")
     acc.add_argument(
         "--workers", type=int, default=None, help="processes (default: CPU count; 0: in-process)"
     )
@@ -106,9 +107,9 @@ def _preflight(args: argparse.Namespace) -> None:
         writable("--out", args.out)
         return
     if args.csv is not None:
-        writable("--csv", args.csv)
+        writable("--csv", args.csv, force=args.force)
     if args.figure is not None:
-        writable("--figure", args.figure)
+        writable("--figure", args.figure, force=args.force)
         needs("matplotlib", "--figure")
 
 

@@ -66,7 +66,7 @@ def cmd_schema(args: argparse.Namespace) -> int:
     if args.output is None:
         sys.stdout.write(text)
     else:
-        writable("--output", args.output).write_text(text, encoding="utf-8")
+        writable("--output", args.output, force=args.force).write_text(text, encoding="utf-8")
     return EXIT_OK
 
 
@@ -86,4 +86,5 @@ def configure_check(p: argparse.ArgumentParser) -> None:
 
 def configure_schema(p: argparse.ArgumentParser) -> None:
     p.add_argument("--output", "-o", metavar="FILE", help="write it to FILE instead")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --output file")
     p.set_defaults(func=cmd_schema)

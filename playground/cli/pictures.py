@@ -22,8 +22,13 @@ __all__ = [
 
 def cmd_play(args: argparse.Namespace) -> int:
     """Open a level in the desktop view (see :mod:`playground.view.launcher`)."""
-    if args.replay_out is not None:
-        writable("--replay-out", args.replay_out)
+    for option, path in (
+        ("--replay-out", args.replay_out),
+        ("--screenshot", args.screenshot),
+        ("--gif", args.gif),
+    ):
+        if path is not None:
+            writable(option, path, force=args.force)
     from playground.view.launcher import run_play
 
     return run_play(args)
@@ -67,6 +72,9 @@ def configure_play(p: argparse.ArgumentParser) -> None:
     p.add_argument("--size", metavar="WxH", help="window or off-screen size in px (1280x720)")
     p.add_argument("--replay-out", metavar="FILE", help="write the session's inputs as a replay")
     p.add_argument("--replay", metavar="FILE", help="watch a replay instead of playing")
+    p.add_argument(
+        "--force", action="store_true", help="overwrite existing --replay-out, --screenshot, --gif"
+    )
     p.set_defaults(func=cmd_play)
 
 

@@ -17,9 +17,12 @@ class UsageError(Exception):
     """Bad input or environment found by a command: the message is the whole story."""
 
 
-def writable(option: str, path: str | Path, *, suffixes: Sequence[str] = ()) -> Path:
-    """``path`` if a file can be written there: its folder exists, it is not a folder, and it ends
-    in one of ``suffixes`` (any, if none are given).
+def writable(
+    option: str, path: str | Path, *, suffixes: Sequence[str] = (), force: bool = False
+) -> Path:
+    """``path`` if a file can be written there: its folder exists, it is not a folder, it ends in
+    one of ``suffixes`` (any, if none are given), and nothing is there yet — not even a symlink,
+    dangling or not — unless ``force``.
 
     >>> writable("--output", "/no/x.json")
     Traceback (most recent call last):
@@ -33,6 +36,8 @@ def writable(option: str, path: str | Path, *, suffixes: Sequence[str] = ()) -> 
         raise UsageError(f"{option}: {p} is a folder; expected a file name")
     if not p.parent.is_dir():
         raise UsageError(f"{option}: folder {p.parent} does not exist (for {p})")
+    if not force and (p.exists() or p.is_symlink()):
+        raise UsageError(f"{option}: {p} already exists (use --force to overwrite)")
     return p
 
 

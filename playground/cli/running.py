@@ -63,17 +63,21 @@ def cmd_run(args: argparse.Namespace) -> int:
     level = load(path)
     scene = build(level)
     seconds = level.settings.seconds if args.seconds is None else args.seconds
-    longest = MAX_TIME if args.long else MAX_SECONDS
-    if not (math.isfinite(seconds) and 0 <= seconds <= longest):
-        more = "" if args.long else f" (up to {MAX_TIME:g} s with --long)"
-        raise UsageError(
-            f"--seconds: expected a number of seconds in [0, {longest:g}]{more}, got {seconds:g}"
-        )
+    # Whichever set the length is named: the flag, the replay (its steps), or the level file
+    # (check bounds settings.seconds to what run allows without --long).
+    key = "--seconds" if args.seconds is not None else f"{path}: settings.seconds"
     if args.replay is not None:
         covered = _replay(args.replay, path.stem, scene)
         if covered is None:
             return EXIT_USAGE
-        seconds = covered if args.seconds is None else seconds
+        if args.seconds is None:
+            seconds, key = covered, f"{args.replay}: steps × dt"
+    longest = MAX_TIME if args.long else MAX_SECONDS
+    if not (math.isfinite(seconds) and 0 <= seconds <= longest):
+        more = "" if args.long else f" (up to {MAX_TIME:g} s with --long)"
+        raise UsageError(
+            f"{key}: expected a number of seconds in [0, {longest:g}]{more}, got {seconds:g}"
+        )
     checks = watch(scene)
     if args.profile:
         scene.world.config = dataclasses.replace(scene.world.config, timing=True)

@@ -73,7 +73,9 @@ def shipped() -> dict[str, Path]:
     found: dict[str, Path] = {}
     for d in levels_dirs():
         for f in sorted(d.glob("*.toml")):
-            found.setdefault(f.stem, f)
+            # Only regular files are levels: reading a FIFO named *.toml would block.
+            if f.is_file():
+                found.setdefault(f.stem, f)
     for name, path in _packaged().items():
         found.setdefault(name, path)
     return found

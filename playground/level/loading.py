@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 import tomllib
 from pathlib import Path
 
@@ -62,6 +63,9 @@ def load(path: str | os.PathLike[str]) -> Level:
     """
     p = Path(path)
     try:
+        # Only a regular file is read (opening a FIFO would block until a writer comes).
+        if not stat.S_ISREG(p.stat().st_mode):
+            raise LevelError(str(p), [Problem("", "not a regular file; a level is a TOML file")])
         text = p.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise LevelError(str(p), [Problem("", f"cannot read the file: {exc}")]) from None

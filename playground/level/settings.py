@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field
 
@@ -20,10 +20,10 @@ class Settings(Derived):
     __core__ = WorldConfig
     __only__ = ("dt", "substeps", "iterations", "damping", "collision_slop", "contact_split")
 
-    seconds: Positive = Field(
+    # Its own bounded type: an outer ``le`` does not narrow the ``le`` of an Annotated type.
+    seconds: Annotated[float, Field(gt=0.0, le=limits.MAX_SECONDS, allow_inf_nan=False)] = Field(
         default=3.0,
-        le=limits.MAX_SECONDS,
-        description="Length of a run (at most an hour).",
+        description="Length of a run (at most an hour, as `playground run` allows without --long).",
         json_schema_extra={"unit": "s"},
     )
 

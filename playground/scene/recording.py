@@ -86,7 +86,8 @@ def check_output(path: str | os.PathLike[str], *, force: bool = False) -> Path:
         raise IsADirectoryError(errno.EISDIR, "is a folder", str(p))
     if not force:
         for existing in (p, _partial(p)):
-            if existing.exists():
+            # A dangling symlink counts: writing through it would create its target.
+            if existing.exists() or existing.is_symlink():
                 raise FileExistsError(
                     errno.EEXIST, "already exists (use --force to overwrite)", str(existing)
                 )

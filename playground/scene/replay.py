@@ -37,6 +37,7 @@ from pydantic import ValidationError
 from playground.controller.mouse import Grab, MouseSpring
 from playground.intents import Intent
 from playground.level.explain import problems
+from playground.level.replay_document import MAX_REPLAY_STEPS, ReplayDocument
 from playground.level.timeline import IntentTable
 from playground.world.schedule import Stage
 from playground.world.world import World
@@ -133,40 +134,35 @@ class Replay:
 
     @classmethod
     def from_json(cls, text: str, where: str = "replay") -> Replay:
-        """Parse a replay document; errors name ``where`` and what was expected."""
+        """Parse a replay document; errors name ``where``, the key and what was expected."""
         try:
             doc = json.loads(text)
         except json.JSONDecodeError as exc:
             raise ReplayError(f"{where}: not JSON ({exc})") from None
+        except RecursionError:
+            raise ReplayError(f"{where}: nested too deeply (a replay nests three levels)") from None
+        except ValueError as exc:  # an integer of more digits than Python converts
+            raise ReplayError(f"{where}: not a replay ({exc})") from None
         if not isinstance(doc, dict) or doc.get("format") != FORMAT:
             raise ReplayError(f"{where}: expected a JSON object with format {FORMAT!r}")
-        if doc.get("version") != VERSION:
-            raise ReplayError(f"{where}: version: expected {VERSION}, got {doc.get('version')!r}")
-        level, dt, steps = doc.get("level"), doc.get("dt"), doc.get("steps")
-        if not isinstance(level, str):
-            raise ReplayError(f"{where}: level: expected a level name, got {level!r}")
-        if not (isinstance(dt, float) and math.isfinite(dt) and dt > 0.0):
-            raise ReplayError(f"{where}: dt: expected a number of seconds > 0, got {dt!r}")
-        if not (isinstance(steps, int) and steps >= 0):
-            raise ReplayError(f"{where}: steps: expected an integer >= 0, got {steps!r}")
-        raw = doc.get("changes")
-        if not isinstance(raw, list):
-            raise ReplayError(f"{where}: changes: expected a list of [step, intent]")
+        try:
+            head = ReplayDocument.model_validate(doc)
+        except ValidationError as exc:
+            found = "; ".join(str(p) for p in problems(exc, ReplayDocument))
+            raise ReplayError(f"{where}: {found}") from None
+        level, dt, steps = head.level, head.dt, head.steps
         changes: list[tuple[int, Intent]] = []
         last = -1
-        for k, entry in enumerate(raw):
+        for k, entry in enumerate(head.changes):
             here = f"{where}: changes[{k}]"
-            ok = isinstance(entry, list) and len(entry) == 2
-            if not ok or not isinstance(entry[0], int) or not isinstance(entry[1], dict):
+            if not _entry(entry) or not isinstance(entry[1], dict):
                 raise ReplayError(f"{here}: expected [step, {{intent fields}}], got {entry!r}")
             if entry[0] <= last:
                 raise ReplayError(f"{here}: steps must increase, got {entry[0]} after {last}")
             last = entry[0]
             changes.append((entry[0], intent_from_dict(entry[1], here)))
-        actor = doc.get("actor", "player")
-        if not isinstance(actor, str):
-            raise ReplayError(f"{where}: actor: expected a body name, got {actor!r}")
-        grabs = _grabs_from(doc.get("grabs", []), where)
+        actor = head.actor
+        grabs = _grabs_from(head.grabs, where)
         return cls(
             level=level,
             dt=dt,
@@ -246,16 +242,20 @@ def _point(value: Any) -> tuple[float, float] | None:
     return (float(value[0]), float(value[1]))
 
 
-def _grabs_from(raw: Any, where: str) -> tuple[tuple[int, Grab | None], ...]:
+def _entry(entry: Any) -> bool:
+    """Whether ``entry`` is ``[step, value]`` with a step index within a replay's bounds."""
+    ok = isinstance(entry, list) and len(entry) == 2 and type(entry[0]) is int
+    return ok and 0 <= entry[0] <= MAX_REPLAY_STEPS
+
+
+def _grabs_from(raw: list[Any], where: str) -> tuple[tuple[int, Grab | None], ...]:
     """The ``grabs`` list of a replay document: ``[step, {body, anchor, target} | null]``."""
-    if not isinstance(raw, list):
-        raise ReplayError(f"{where}: grabs: expected a list of [step, grab or null]")
     out: list[tuple[int, Grab | None]] = []
     last = -1
     for k, entry in enumerate(raw):
         here = f"{where}: grabs[{k}]"
         expected = 'expected [step, {"body", "anchor": [x, y], "target": [x, y]} or null]'
-        if not (isinstance(entry, list) and len(entry) == 2 and isinstance(entry[0], int)):
+        if not _entry(entry):
             raise ReplayError(f"{here}: {expected}, got {entry!r}")
         if entry[0] <= last:
             raise ReplayError(f"{here}: steps must increase, got {entry[0]} after {last}")

@@ -193,7 +193,7 @@ def test_bad_replays_say_what_is_wrong(text: str, expected: str) -> None:
         ('[[0, {"body": "crate"}]]', "grabs[0]: expected"),
         ('[[0, {"body": "crate", "anchor": [0, 0], "target": [1, "x"]}]]', "grabs[0]"),
         ("[[5, null], [5, null]]", "steps must increase"),
-        ('{"0": null}', "grabs: expected a list"),
+        ('{"0": null}', "grabs: expected an array"),
     ],
 )
 def test_bad_grabs_in_a_replay_say_what_is_wrong(grabs: str, expected: str) -> None:
@@ -243,3 +243,66 @@ def test_intents_keep_their_serialised_form() -> None:
     (entry,) = json.loads(replay.to_json())["changes"]
     assert entry == [0, {"move": 0.5, "gravity": [0.0, -1.0], "nullify": "crate"}]
     assert list(entry[1]) == ["move", "gravity", "nullify"]
+
+
+def _head(**keys: object) -> str:
+    doc = {"format": "playground-replay", "version": 1, "level": "rest", "dt": 1 / 120}
+    doc.update({"steps": 3, "changes": [], **keys})
+    return json.dumps(doc)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (_head(steps=10**15), "steps: expected less than or equal to 864000000"),
+        (_head(steps=10**400), "steps: expected less than or equal to"),
+        (_head(steps=-1), "steps: expected greater than or equal to 0"),
+        (_head(steps=2.5), "steps: expected an integer"),
+        (_head(dt=0.0), "dt: expected greater than or equal to 0.0001"),
+        (_head(level=""), "level:"),
+        (_head(actor="no body!"), "actor:"),
+        (_head(stepz=3), "stepz: unknown key (did you mean 'steps'?)"),
+        (_head(changes=[[10**400, {}]]), "changes[0]: expected [step"),
+        (_head(grabs=[[-5, None]]), "grabs[0]: expected [step"),
+        ('{"format": "playground-replay", "x": ' + "[" * 200_000 + "]" * 200_000 + "}", "deep"),
+        ('{"format": "playground-replay", "steps": 1' + "0" * 5000 + "}", "not a replay"),
+    ],
+    ids=[
+        "steps 1e15",
+        "steps 1e400",
+        "steps -1",
+        "steps 2.5",
+        "dt 0",
+        "level empty",
+        "actor",
+        "unknown key",
+        "change step 1e400",
+        "grab step -5",
+        "nested 200000 deep",
+        "5000 digits",
+    ],
+)
+def test_a_replay_is_a_bounded_document(text: str, expected: str) -> None:
+    """Law: a replay is validated as a document, like a level: every number bounded (steps at
+    most a day at the smallest dt), unknown keys refused, nesting and digits bounded; each
+    refusal is a ReplayError naming the file and the key — never OverflowError, RecursionError
+    or a hang later."""
+    with pytest.raises(ReplayError, match=re.escape(expected)) as error:
+        Replay.from_json(text, where="r.json")
+    assert str(error.value).startswith("r.json: ")
+
+
+def test_run_bounds_the_length_a_replay_sets(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Law: the run-length rule applies after a replay sets the run's length: a replay of
+    10^8 steps (within the format, two weeks at this dt) is refused at once, exit 2, naming
+    the replay, instead of running for weeks."""
+    from playground.cli import EXIT_USAGE, main
+
+    path = tmp_path / "long.json"
+    path.write_text(_head(steps=10**8), encoding="utf-8")
+    assert main(["run", "rest", "--replay", str(path)]) == EXIT_USAGE
+    assert (
+        f"{path}: steps × dt: expected a number of seconds in [0, 3600]" in capsys.readouterr().err
+    )
