@@ -25,7 +25,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 API_GROUPS: dict[str, str] = {
     "world": "The world",
-    "runner": "Running a world in a game loop",
+    "fixed_step": "The fixed step in a game loop",
     "controller": "The controller",
     "intents": "Intents",
     "forces": "Forces",

@@ -5,6 +5,7 @@ The distribution is ``pymunk-playground``; the package and the command are ``pla
 """
 
 from playground.controller import Controller, ControllerConfig, ControllerForces, GroundHit, State
+from playground.fixed_step import FixedStep, FrameSteps
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.readings import BodyForces
 from playground.forces.solver import ForceSolver
@@ -37,8 +38,10 @@ __all__ = [
     "ControllerConfig",
     "ControllerForces",
     "Elevator",
+    "FixedStep",
     "ForceLedger",
     "ForceSolver",
+    "FrameSteps",
     "GravityField",
     "GravityRule",
     "GroundHit",
