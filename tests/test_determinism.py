@@ -53,8 +53,8 @@ def snapshot(world: World) -> list[NDArray[np.float64]]:
     state = np.array(
         [(b.position.x, b.position.y, b.angle, b.velocity.x, b.velocity.y) for b in bodies]
     )
-    s = world.solver
-    return [state, s.engine, s.support, s.contact, s.engine_torque, world.perceived.gravity]
+    s = world.readings()
+    return [state, s.engine, s.support, s.contact, s.engine_torque, s.perceived_gravity]
 
 
 def test_two_builds_are_bit_identical() -> None:

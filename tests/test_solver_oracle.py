@@ -155,11 +155,12 @@ def touches_only_static(body: pymunk.Body) -> bool:
 
 
 PATHS = {"vector": 0, "scalar": 10**6, "switching": 12}
-"""Most tracked bodies the scalar path may serve: never, always, and 12, which the scenes (5–24
-tracked bodies) cross both ways as bodies come and go, so the state moves between the paths."""
+"""Most tracked bodies the scalar implementation may serve: never, always, and 12, which the scenes
+(5–24 tracked bodies) cross both ways as bodies come and go, so the state moves between the
+implementations."""
 
 TOL_PATHS = 1e-12
-"""Relative difference allowed between the scalar and vectorised paths: the same operations in
+"""Relative difference allowed between the scalar and batch implementations: the same operations in
 the same order, except magnitudes (``math.hypot`` against numpy's complex ``abs``), which may
 differ in the last place; the 1€ filter's feedback keeps that at round-off."""
 
@@ -264,17 +265,17 @@ SEEDS = {"uniform": range(5), "split": range(3), "field": range(3), "substeps": 
 
 @pytest.mark.parametrize(("kind", "seed"), [(kind, seed) for kind in KINDS for seed in SEEDS[kind]])
 def test_scalar_and_vector_paths_give_one_answer(kind: str, seed: int) -> None:
-    """Law: the scalar path (always, or switching at the crossover as bodies come and go) and the
-    vectorised path give the same readings and perceived gravity on every step of the same
-    random scene, within TOL_PATHS; the contact split (contact, its normal part, the
-    constraint's, and whether it is known) bit for bit; in a field that varies in space, the
-    same trajectory bit for bit. The arrays a caller reads from ``world.solver`` and
-    ``world.perceived`` hold the scalar path's values too."""
+    """Law: the scalar implementation (always, or switching at the crossover as bodies come and go)
+    and the batch implementation give the same readings and perceived gravity on every step of the
+    same random scene, within TOL_PATHS; the contact split (contact, its normal part, the
+    constraint's, and whether it is known) bit for bit; in a field that varies in space, the same
+    trajectory bit for bit. The arrays of ``world.readings()`` hold the values the serving
+    implementation reads out body by body, whichever serves."""
     runs = [scene(seed, PATHS[p], kind) for p in ("vector", "scalar", "switching")]
     split_known = 0
     served = 0
     for (ref, _, _), *others in zip(*runs, strict=True):
-        names = sorted(n for n in ref.names if ref.solver.row_of(ref.body(n)) is not None)
+        names = sorted(n for n in ref.names if ref.is_tracked(n))
         for world, _, _ in others:
             for name in names:
                 a, b = ref.forces(name), world.forces(name)
@@ -293,16 +294,20 @@ def test_scalar_and_vector_paths_give_one_answer(kind: str, seed: int) -> None:
                 split_known += b.split_valid
                 body_a, body_b = ref.body(name), world.body(name)
                 assert (body_a.position, body_a.velocity) == (body_b.position, body_b.velocity)
-            served += world.on_scalar_path
+            served += world.tracked_kind == "scalar"
         if ref.steps % 60 == 0:
-            # The arrays are filled from the scalar path when read.
-            scalar = others[0][0]
-            for name in names:
-                row = scalar.solver.row_of(scalar.body(name))
-                assert row is not None
-                g = scalar.perceived.gravity[row]
-                assert _close((float(g[0]), float(g[1])), scalar.perceived_gravity(name)), name
-                e = scalar.solver.engine[row]
-                assert _close((float(e[0]), float(e[1])), scalar.forces(name).engine), name
-    assert served > STEPS  # the scalar path served every step of one run, some of the other
+            # The arrays hold what the readers give, for the batch and the scalar worlds alike.
+            for world in (ref, others[0][0]):
+                table = world.readings()
+                rows = {body: i for i, body in enumerate(table.bodies)}
+                assert list(table.bodies) == world.tracked_bodies
+                for name in names:
+                    row = rows[world.body(name)]
+                    g = table.perceived_gravity[row]
+                    assert (float(g[0]), float(g[1])) == world.perceived_gravity(name), name
+                    e = table.engine[row]
+                    assert (float(e[0]), float(e[1])) == world.forces(name).engine, name
+    assert (
+        served > STEPS
+    )  # the scalar implementation served every step of one run, some of the other
     assert (split_known > STEPS) == (kind in ("split", "substeps"))

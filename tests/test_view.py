@@ -82,7 +82,7 @@ def record(world: World) -> list[tuple[float, ...]]:
         for n in w.names:
             b = w.body(n)
             row += [*b.position, *b.velocity, b.angle, b.angular_velocity]
-        for b in w.solver.bodies:
+        for b in w.tracked_bodies:
             name = w.name_of(b)
             assert name is not None
             row += [*w.forces(name).support, *w.perceived_gravity(name)]

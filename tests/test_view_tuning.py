@@ -100,11 +100,15 @@ def test_one_euro_sliders_retune_the_filter_without_resetting_it() -> None:
     p = app.world.config.perception
     assert p.min_cutoff == app.tuning.knobs.min_cutoff != 2.0
     assert p.beta == pytest.approx(0.5, abs=0.02)
-    chain = app.world.perceived._filter
+    # The 1€ stage both implementations of the tracked bodies filter with.
+    chain = app.world._physics.tracked._batch.perceived._filter
     one_euro = chain.stages[-1]
     assert (one_euro.min_cutoff, one_euro.beta) == (p.min_cutoff, p.beta)
-    assert one_euro.value is not None  # still warm: not a fresh filter
     assert app.world.perceived_gravity("player") == before
+    app.frame(1.0 / 60.0)
+    # Still warm: a fresh filter's first output is its sample, −specific force.
+    sx, sy = app.world.forces("player").specific
+    assert app.world.perceived_gravity("player") != (-sx, -sy)
 
 
 def test_dt_and_substeps_sliders_change_the_step_and_time_goes_on() -> None:

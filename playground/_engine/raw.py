@@ -5,7 +5,8 @@ paths of a few bodies.
 A pymunk property is a Python function that calls the C getter and wraps the result: reading
 ``body.velocity`` costs ~0.5 µs, of which the C call is ~0.1 µs and the rest the wrapping (a
 ``Vec2d``), ``body.id`` ~0.45 µs (a cast of the user-data pointer). On a one-player level the
-controller and the scalar path read a dozen such values a step, which is most of their bill.
+controller and the tracked bodies' scalar implementation read a dozen such values a step, which
+is most of their bill.
 These functions call the same C getters and setters pymunk's properties call, so they read and
 write the very same doubles (``tests/_engine/test_raw.py`` checks them against the properties,
 bit for bit, so an upgrade of pymunk that changed its internals fails there, not in a trajectory).

@@ -1,7 +1,7 @@
 """The goals of the performance issue and their verdicts: :data:`GOALS` in the order of its table,
 and :func:`judge`, which takes each goal's worst case over the rows it covers and, where a goal is
 missed, says by how much and why, quoting the measured facts (the stages the time goes to, the
-engine's share, the levels on the vectorised path, the per-body cost on the pile).
+engine's share, the levels served by the batch implementation, the per-body cost on the pile).
 """
 
 from __future__ import annotations
@@ -89,7 +89,8 @@ GOALS = (
         3.0,
         True,
         "×",
-        "Ten tracked bodies are on the scalar path: {per_body} µs of Python per body per step "
+        "Ten tracked bodies are served in plain floats (the scalar implementation): "
+        "{per_body} µs of Python per body per step "
         "(four Chipmunk getters through cffi before the step and two after it, about 0.1 µs "
         "each, then reverse integration and the 1€ filter in floats), against {bare_per_body} "
         "µs per box for the bare step.",
@@ -168,7 +169,8 @@ def _facts(
         "vector": (
             "Levels " + ", ".join(vector) + " keep the vectorised solver (numpy and batch calls)"
             if vector
-            else "Every one-player level is on the scalar path (plain floats, no numpy)"
+            else "Every one-player level is served by the scalar implementation "
+            "(plain floats, no numpy)"
         ),
         "per_body": f"{(small.us - small.base_us) / 10:.1f}" if small else "?",
         "bare_per_body": f"{small.base_us / 10:.1f}" if small else "?",

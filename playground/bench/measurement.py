@@ -30,7 +30,8 @@ class LevelRow:
         ratio: level / engine, median of paired blocks.  ratio_lo, ratio_hi: their spread.
         realtime: dt / level step: simulated seconds per wall second.
         stages: median µs of each stage over the steps it ran in, by lower-case stage name.
-        scalar: its tracked bodies are served by the scalar path (plain floats), not numpy.
+        scalar: its tracked bodies are served by the scalar implementation (plain floats), not
+            numpy.
     """
 
     level: str
@@ -54,7 +55,7 @@ class PileRow:
         kind: ``solver+1€`` (every box tracked and perceived against bare steps of the same
             space), ``field`` (a per-body radial field against uniform gravity), ``no effect``
             (a world against a bare space holding the same pile) or ``scalar/vector`` (the
-            scalar path against the vectorised one, every box tracked and perceived).
+            scalar implementation against the batch one, every box tracked and perceived).
         bodies: boxes.  us: the measured side, µs per step.  base_us: what it is compared with.
         ratio: us / base_us, median of paired blocks.  ratio_lo, ratio_hi: their spread.
         overhead: ratio − 1.

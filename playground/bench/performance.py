@@ -58,7 +58,7 @@ PILE_SIZES = (10, 100, 1000, 3000)
 """Pile sizes measured by default (the goals quote 10, 1000 and 3000)."""
 
 CROSSOVER_SIZES = (1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 48)
-"""Tracked bodies at which the scalar path is timed against the vectorised one."""
+"""Tracked bodies at which the scalar implementation is timed against the batch one."""
 
 FIELD_BODIES = 1000
 """Boxes in the pile on which a per-body gravity field is timed against uniform gravity."""
@@ -126,7 +126,7 @@ def level_row(name: str, repeats: int = REPEATS) -> LevelRow:
         ratio_hi=hi,
         realtime=world.config.dt / (level_us * 1e-6),
         stages=stages,
-        scalar=world.on_scalar_path,
+        scalar=world.tracked_kind == "scalar",
     )
 
 
@@ -170,7 +170,7 @@ def solver_row(n: int, repeats: int = REPEATS) -> PileRow:
 
 
 def crossover_row(n: int, repeats: int = REPEATS) -> PileRow:
-    """The scalar path against the vectorised one, every box tracked and perceived (the default
+    """The scalar implementation against the batch one, every box tracked and perceived (the default
     perception): where the ratio passes 1 is where the world should switch."""
     worlds = []
     for most in (n, 0):

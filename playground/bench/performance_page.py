@@ -1,6 +1,6 @@
 """docs/performance.md, written from one :class:`~playground.bench.measurement.Measurement`: how
 it is measured and how far to trust it, then the goals, every shipped level, the pile and where
-the scalar path stops paying, each a Markdown table.
+the scalar implementation of the tracked bodies stops paying, each a Markdown table.
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from collections.abc import Sequence
 from playground.bench.markdown import table
 from playground.bench.measurement import STAGES, GoalResult, LevelRow, Measurement, PileRow
 from playground.bench.performance import STAGE_STEPS
-from playground.scalar.path import SCALAR_MAX_BODIES
+from playground.forces.scalar import SCALAR_MAX_BODIES
 
 __all__ = [
     "crossover_markdown",
@@ -72,26 +72,27 @@ def piles_markdown(piles: Sequence[PileRow]) -> str:
 
 
 def crossover_markdown(piles: Sequence[PileRow]) -> str:
-    """Where the scalar path stops paying: the measured ratios and the crossover they give."""
+    """Where the scalar implementation stops paying: the measured ratios and the crossover they
+    give."""
     rows = sorted((r for r in piles if r.kind == "scalar/vector"), key=lambda r: r.bodies)
     if not rows:
         return ""
     below = [r.bodies for r in rows if r.ratio < 1.0]
     above = [r.bodies for r in rows if r.ratio >= 1.0]
     cross = (
-        f"the scalar path is cheaper up to {max(below)} tracked bodies"
+        f"the scalar implementation is cheaper up to {max(below)} tracked bodies"
         + (f" and dearer from {min(above)}" if above else "")
         if below
-        else "the scalar path is never cheaper"
+        else "the scalar implementation is never cheaper"
     )
     return (
-        "## Two paths: where the scalar one stops paying\n\n"
+        "## Scalar or batch: where the scalar implementation stops paying\n\n"
         "With few tracked bodies the solver and the filter run in plain floats, reading each "
-        "body's attributes (`playground/scalar/`); with many, on numpy arrays filled by "
+        "body's attributes (`playground/forces/scalar/`); with many, on numpy arrays filled by "
         "`pymunk.batch`. "
         "Both give the same readings (tests/test_solver_oracle.py compares them step by step on "
         "random scenes). Measured here on the pile with every box tracked and perceived, scalar "
-        f"step / vectorised step: {cross}. The world switches at "
+        f"step / batch step: {cross}. The world switches at "
         f"`SCALAR_MAX_BODIES` = {SCALAR_MAX_BODIES} tracked bodies.\n\n"
         + table(
             ["tracked bodies", "scalar µs", "vectorised µs", "scalar / vectorised (blocks)"],

@@ -336,7 +336,7 @@ def run_checked(hard: Hard, seconds: float | None = None) -> dict[str, float]:
     :class:`InvariantError` at the first step that breaks one.
     """
     world = hard.world
-    tracked = [n for b in world.solver.bodies if (n := world.name_of(b)) is not None]
+    tracked = [n for b in world.tracked_bodies if (n := world.name_of(b)) is not None]
     fed = {name: 0.0 for name in tracked}
     e0 = _energy(world) if hard.conservative else 0.0
     worst = {"penetration": 0.0, "energy_gain": 0.0}
@@ -360,7 +360,7 @@ def run_checked(hard: Hard, seconds: float | None = None) -> dict[str, float]:
                 fail("finite", f"{name} has a non-finite force reading {f}")
             if f.valid:
                 fed[name] = max(fed[name], math.hypot(*f.specific))
-            if name not in {world.name_of(b) for b in world.solver.bodies}:
+            if name not in {world.name_of(b) for b in world.tracked_bodies}:
                 continue  # no longer tracked: nothing is perceived
             g = world.perceived_gravity(name)
             up = world.perceived_up(name)

@@ -1,12 +1,18 @@
-"""One tracked body's force readings after a step, as plain values (:class:`BodyForces`)."""
+"""The tracked bodies' force readings after a step: one body's as plain values
+(:class:`BodyForces`), every body's as arrays (:class:`TrackedReadings`).
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+import pymunk
+from numpy.typing import NDArray
+
 from playground.vec import Vec
 
-__all__ = ["BodyForces"]
+__all__ = ["BodyForces", "TrackedReadings"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,3 +50,27 @@ class BodyForces:
     contact_friction: Vec
     constraint: Vec
     split_valid: bool
+
+
+@dataclass(frozen=True, slots=True)
+class TrackedReadings:
+    """Every tracked body's readings after a step, one row each in :attr:`bodies` order (copies:
+    the next step does not change them). Each array means what the :class:`BodyForces` field
+    of the same name means; ``perceived_gravity`` (m/s²) and ``perceived_up`` (unit vectors)
+    are the filter's, as of its last step.
+    """
+
+    bodies: tuple[pymunk.Body, ...]
+    valid: NDArray[np.bool_]
+    engine: NDArray[np.float64]
+    engine_torque: NDArray[np.float64]
+    support: NDArray[np.float64]
+    specific: NDArray[np.float64]
+    passive: NDArray[np.float64]
+    applied: NDArray[np.float64]
+    contact: NDArray[np.float64]
+    contact_normal: NDArray[np.float64]
+    constraint: NDArray[np.float64]
+    split_valid: NDArray[np.bool_]
+    perceived_gravity: NDArray[np.float64]
+    perceived_up: NDArray[np.float64]

@@ -1,5 +1,7 @@
 """Gravity: the fields (:mod:`~playground.gravity.field`), each body's rule
-(:mod:`~playground.gravity.rule`) and what a body perceives (:mod:`~playground.gravity.perception`).
+(:mod:`~playground.gravity.rule`), a field body by body in plain floats for few bodies
+(:mod:`~playground.gravity.plain`) and what a body perceives
+(:mod:`~playground.gravity.perception`).
 
 Values and formulas only, in m/s²: the world's gravity stage (``playground.world.gravity_stage``)
 applies them to the bodies of a space.

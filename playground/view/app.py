@@ -173,7 +173,7 @@ class App:
             name not in self.world.names or self.world.body(name).body_type != pymunk.Body.DYNAMIC
         ):
             name = None
-        if name is not None and self.world.solver.row_of(self.world.body(name)) is None:
+        if name is not None and not self.world.is_tracked(name):
             self.world.track(name)
         if name != self.selected:
             self.selected = name

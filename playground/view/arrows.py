@@ -153,7 +153,7 @@ class PeakHold:
         if self._drawn:
             self._peak.clear()
             self._drawn = False
-        for body in world.solver.bodies:
+        for body in world.tracked_bodies:
             name = world.name_of(body)
             if name is None:
                 continue

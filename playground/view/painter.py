@@ -119,7 +119,7 @@ class Painter:
         arrows: list[ScreenArrow] = []
         peaks = self.hold.peaks()
         self.scale_body = None
-        for body in world.solver.bodies:
+        for body in world.tracked_bodies:
             name = world.name_of(body)
             if name is None:
                 continue

@@ -66,7 +66,7 @@ class Show:
         """The body the HUD and the scope watch unless one is selected: the player; else the body
         the camera follows; else the first tracked body (None: no body is tracked)."""
         world = self.world
-        tracked = [n for n in (world.name_of(b) for b in world.solver.bodies) if n is not None]
+        tracked = [n for n in (world.name_of(b) for b in world.tracked_bodies) if n is not None]
         return next((n for n in (self.player, self.follow, *tracked) if n in tracked), None)
 
 

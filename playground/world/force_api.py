@@ -3,8 +3,8 @@ tracked bodies (engine forces, perceived gravity, perceived up).
 
 Forces go into the world's :class:`~playground.forces.ForceLedger` after a check of their size
 (a runaway force is refused here, naming the argument, rather than blowing the step up later);
-readings come from the physics stage (:mod:`playground.world.physics`), on whichever path
-serves the tracked bodies.
+readings come from the tracked bodies (:class:`~playground.forces.tracked.TrackedSet`), whichever
+implementation serves them; reading changes nothing.
 """
 
 from __future__ import annotations
@@ -16,9 +16,7 @@ import pymunk
 
 from playground._engine import raw
 from playground.forces.ledger import Category, ForceLedger
-from playground.forces.readings import BodyForces
-from playground.forces.solver import ForceSolver
-from playground.gravity import PerceivedGravity
+from playground.forces.readings import BodyForces, TrackedReadings
 from playground.limits import MAX_COORDINATE, MAX_IMPULSE, RUNAWAY_FORCE
 from playground.params import bounded, bounded_vec
 from playground.vec import Vec
@@ -64,26 +62,29 @@ class ForceAPI(BodyRegistry):
             self._defer(lambda: self.track(*names, perceive=perceive))
             return
         for name in names:
-            self._physics.track(self.body(name), perceive)
+            self._physics.tracked.track(self.body(name), perceive)
 
     @property
-    def solver(self) -> ForceSolver:
-        """The force solver: membership and readings of the tracked bodies (the scalar path's
-        readings are copied in when it serves them)."""
-        self._physics.sync()
-        return self._physics.solver
+    def tracked_bodies(self) -> list[pymunk.Body]:
+        """The tracked bodies, in the order they were tracked (a copy)."""
+        return list(self._physics.tracked.bodies)
+
+    def is_tracked(self, name: str) -> bool:
+        """Whether the body ``name`` is tracked (KeyError naming the known bodies if there is
+        no such body)."""
+        return self._physics.tracked.row_of(self.body(name), self._ids[name]) is not None
+
+    def readings(self) -> TrackedReadings:
+        """Every tracked body's last readings and perceived gravity, as arrays (copies), one row
+        each in :attr:`tracked_bodies` order."""
+        return self._physics.tracked.active.table()
 
     @property
-    def perceived(self) -> PerceivedGravity:
-        """Perceived gravity of the tracked bodies (filled from the scalar path when it serves)."""
-        self._physics.sync()
-        return self._physics.perceived
-
-    @property
-    def on_scalar_path(self) -> bool:
-        """Whether the scalar path (plain floats, :mod:`playground.scalar`) serves the tracked
-        bodies in the coming steps (as last planned)."""
-        return self._physics.scalar_on
+    def tracked_kind(self) -> str:
+        """Which implementation serves the tracked bodies in the coming steps, as last planned:
+        ``"scalar"`` (plain floats, for few bodies) or ``"batch"`` (numpy and
+        ``pymunk.batch``, for many). Benchmarks report it; nothing else needs it."""
+        return self._physics.tracked.active.kind
 
     def apply_force(
         self,
@@ -161,41 +162,24 @@ class ForceAPI(BodyRegistry):
 
     def forces(self, name: str) -> BodyForces:
         """The last readings of a tracked body."""
-        physics = self._physics
-        if physics.scalar_on:
-            return physics.scalar.reading(self._tracked_row(name))
-        return physics.solver.reading(self._tracked_row(name))
+        return self._physics.tracked.active.reading(self._tracked_row(name))
 
     def perceived_gravity(self, name: str) -> Vec:
         """The filtered perceived gravity of a tracked body, m/s²."""
-        physics = self._physics
-        if physics.scalar_on:
-            return physics.scalar.gravity(self._tracked_row(name))
-        g = physics.perceived.gravity[self._tracked_row(name)]
-        return (float(g[0]), float(g[1]))
+        return self._physics.tracked.active.perceived_gravity(self._tracked_row(name))
 
     def perceived_up(self, name: str) -> Vec:
         """Unit vector opposite the perceived gravity, held through weak readings."""
-        physics = self._physics
-        if physics.scalar_on:
-            return physics.scalar.up(self._tracked_row(name))
-        u = physics.perceived.up[self._tracked_row(name)]
-        return (float(u[0]), float(u[1]))
+        return self._physics.tracked.active.perceived_up(self._tracked_row(name))
 
     def perceived_up_and_gravity(self, name: str) -> tuple[Vec, Vec]:
         """:meth:`perceived_up` and :meth:`perceived_gravity` of a tracked body in one call (a
         controller reads both every step; the row is looked up once)."""
-        physics = self._physics
         row = self._tracked_row(name)
-        if physics.scalar_on:
-            scalar = physics.scalar
-            return scalar.up(row), scalar.gravity(row)
-        u = physics.perceived.up[row]
-        g = physics.perceived.gravity[row]
-        return (float(u[0]), float(u[1])), (float(g[0]), float(g[1]))
+        return self._physics.tracked.active.perceived_up_and_gravity(row)
 
     def _tracked_row(self, name: str) -> int:
-        row = self._physics.solver.row_of(self.body(name), self._ids[name])
+        row = self._physics.tracked.row_of(self.body(name), self._ids[name])
         if row is None:
             raise KeyError(f"{name}: not tracked (call world.track({name!r}) first)")
         return row

@@ -3,9 +3,10 @@
 A field uniform in space is ``space.gravity`` (pymunk integrates it at no cost); a body with its
 own rule then gets one correction force, m·(g_rule − g_space), in plain floats. A field that
 varies in space is evaluated once per step at every dynamic body, vectorised, at the positions of
-the physics stage's one batch read (:meth:`GravityStage.forces_at`); while the scalar path serves
-the tracked bodies and the named dynamic bodies are few, it is evaluated body by body in plain
-floats instead (:mod:`playground.scalar.field`). The stage runs only when one of the two is needed.
+the batch implementation's one read of every body (:meth:`GravityStage.forces_at`); while the
+scalar implementation serves the tracked bodies and the named dynamic bodies are few, it is
+evaluated body by body in plain floats instead (:mod:`playground.gravity.plain`). The stage
+runs only when one of the two is needed.
 
 >>> import pymunk
 >>> from playground.forces import ForceLedger
@@ -28,19 +29,12 @@ from numpy.typing import NDArray
 from playground._engine import raw
 from playground._engine.batch import lookup
 from playground.forces.ledger import Category, ForceLedger
+from playground.forces.tracked import FieldForces, FieldOnBodies
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
-from playground.scalar.field import PlainField, PointField, point_field, ruled
-from playground.scalar.path import FieldOnBodies
+from playground.gravity.plain import PlainField, PointField, point_field, ruled
 from playground.vec import Vec
 
-__all__ = ["FieldForces", "GravityStage"]
-FieldForces = Callable[
-    [NDArray[np.uintp], NDArray[np.float64]],
-    tuple[NDArray[np.intp] | slice, NDArray[np.float64]],
-]
-"""A field that varies in space, at the bodies of one batch read: given the read's body ids and
-their (x, y) rows (m), the rows that are named dynamic bodies (their indices, or a slice when
-they are one run) and the field's force (N) on each."""
+__all__ = ["GravityStage"]
 
 _PASSIVE = Category.PASSIVE
 """Read once: a member read off an Enum class costs ~80 ns on CPython 3.11."""
@@ -150,7 +144,7 @@ class GravityStage:
 
     def bodies_changed(self) -> None:
         """A body was added or removed or its mass changed: rebuild the registry before the next
-        evaluation (and plan again: the scalar path serves a field for a few bodies only)."""
+        evaluation (and plan again: a field is handed body by body for a few bodies only)."""
         self._registry_dirty = True
         self._replan()
 
@@ -168,9 +162,10 @@ class GravityStage:
     # -- the stage -------------------------------------------------------------------------------
 
     def plain_ready(self, max_bodies: int) -> bool:
-        """Whether the stage can serve the scalar path: no field force per body (a field uniform
-        in space), or one it evaluates in plain floats at no more than ``max_bodies`` named
-        dynamic bodies."""
+        """Whether the stage can hand its forces body by body (:data:`FieldOnBodies
+        <playground.forces.tracked.FieldOnBodies>`): no field force per body (a field uniform in
+        space), or one it evaluates in plain floats at no more than ``max_bodies`` named dynamic
+        bodies."""
         if not self.active or self.field.uniform:
             return True
         if self._registry_dirty:
@@ -178,14 +173,15 @@ class GravityStage:
         return len(self._reg_bodies) <= max_bodies and self._point is not None
 
     def use_plain(self, on: bool) -> None:
-        """Hand a field that varies in space body by body (the scalar path serves), or as batch
-        rows."""
+        """Hand a field that varies in space body by body (``on``, the form the scalar
+        implementation of the tracked bodies takes), or as batch rows."""
         self._plain_on = on
 
     def apply(self, t: float) -> FieldForces | FieldOnBodies | None:
         """The stage at time ``t`` (s): set ``space.gravity`` and put the rules' corrections in
         the ledger; for a field that varies in space return its force on every body (body by
-        body while :meth:`use_plain` is on), or :meth:`forces_at` for the physics stage's read."""
+        body while :meth:`use_plain` is on), or :meth:`forces_at` for the batch
+        implementation's read."""
         if self._registry_dirty:
             self._refresh_registry()
         g_space = self.space_gravity(t)

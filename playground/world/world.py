@@ -28,6 +28,7 @@ import pymunk
 import pymunk.batch as batch
 
 from playground.forces.ledger import ForceLedger
+from playground.forces.tracked import SCALAR_MAX_BODIES
 from playground.gravity import GravityField, GravityRule, Perception, Uniform
 from playground.limits import (
     MAX_GRAVITY,
@@ -35,15 +36,15 @@ from playground.limits import (
     MAX_MOMENT,
     MIN_MASS,
     MIN_MOMENT,
+    RUNAWAY_FORCE,
 )
 from playground.movers import Mover, Path
 from playground.params import bounded_vec, in_range
-from playground.scalar.path import SCALAR_MAX_BODIES
 from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.force_api import ForceAPI
 from playground.world.gravity_stage import GravityStage
-from playground.world.guard import GUARD_EVERY, RunawayError, state_runaway
+from playground.world.guard import FORCE_COLUMNS, GUARD_EVERY, RunawayError, state_runaway
 from playground.world.physics import PhysicsStage
 from playground.world.schedule import (
     EVENT_EARLY,
@@ -102,8 +103,7 @@ class World(ForceAPI):
         self._epoch = (0, 0.0)  # (steps, time) when dt last changed
         self.steps = 0
         self.ledger = ForceLedger(on_first=self._ledger_filled)
-        self.scalar_max_bodies = SCALAR_MAX_BODIES
-        """Most tracked bodies the scalar path serves (0: never; set before stepping)."""
+        self._scalar_max_bodies = SCALAR_MAX_BODIES
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._movers: list[Mover] = []
         self._schedule = Schedule(self._replan)
@@ -143,12 +143,23 @@ class World(ForceAPI):
         self._guard_next = self.steps + GUARD_EVERY if config.guard else _NEVER
         self._replan()
 
+    @property
+    def scalar_max_bodies(self) -> int:
+        """Most tracked bodies the scalar implementation serves, in plain floats (0: never); the
+        batch implementation serves more. A change takes effect from the next step."""
+        return self._scalar_max_bodies
+
+    @scalar_max_bodies.setter
+    def scalar_max_bodies(self, most: int) -> None:
+        self._scalar_max_bodies = most
+        self._replan()
+
     def set_perception(self, perception: Perception) -> None:
         """Re-tune how perceived gravity is filtered (1€ parameters, up threshold) from the next
         step on, keeping the filter's state; the spike stage is fixed when the world is built."""
         if not isinstance(perception, Perception):
             raise ValueError(f"perception: expected a Perception, got {perception!r}")
-        self._physics.perceived.tune(perception)
+        self._physics.tracked.tune(perception)
         self._config = dataclasses.replace(self._config, perception=perception)
 
     def _replan(self) -> None:
@@ -160,8 +171,9 @@ class World(ForceAPI):
         self._bare = False
 
     def _plan(self) -> None:
-        """Decide whether the next steps are bare (nothing but ``space.step``), and which path
-        serves the tracked bodies (:meth:`PhysicsStage.choose_path`).
+        """Decide whether the next steps are bare (nothing but ``space.step``), and which
+        implementation serves the tracked bodies (:meth:`TrackedSet.plan
+        <playground.forces.tracked.TrackedSet.plan>`).
 
         The ledger is not part of the plan: it fills and empties every step of a level with a
         controller. A step that is idle but for the ledger's forces is bare once they are
@@ -171,8 +183,10 @@ class World(ForceAPI):
         gravity = self._gravity
         physics = self._physics
         schedule = self._schedule
-        physics.choose_path(self.scalar_max_bodies, gravity.plain_ready(self.scalar_max_bodies))
-        gravity.use_plain(physics.scalar_on)
+        tracked = physics.tracked
+        most = self._scalar_max_bodies
+        tracked.plan(most, gravity.plain_ready(most), cfg.substeps)
+        gravity.use_plain(tracked.active.takes_field_by_body)
         self._idle = not (
             schedule.inputs
             or schedule.events
@@ -180,8 +194,8 @@ class World(ForceAPI):
             or gravity.active
             or self._movers
             or schedule.controls
-            or physics.solver.bodies
-            or physics.perceivers
+            or tracked.bodies
+            or tracked.perceivers
             or schedule.observers
             or cfg.timing
             or cfg.substeps != 1
@@ -231,7 +245,7 @@ class World(ForceAPI):
 
     def _up_at(self, body: pymunk.Body) -> Vec:
         """The unit vector against the gravity field at a body: its up until it feels one."""
-        g = self.gravity_at(self._names[body.id])
+        g = self._gravity.at(body, self.time)
         n = math.hypot(*g)
         return (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
 
@@ -242,8 +256,9 @@ class World(ForceAPI):
 
     def _removed(self, body: pymunk.Body) -> None:
         self._gravity.forget(body.id)
-        if self._physics.solver.row_of(body) is not None:
-            self._physics.untrack(body)
+        tracked = self._physics.tracked
+        if tracked.row_of(body) is not None:
+            tracked.untrack(body)
         self._movers = [m for m in self._movers if m.body is not body]
         self._replan()
 
@@ -259,7 +274,7 @@ class World(ForceAPI):
         body.mass = mass
         if moment is not None:
             body.moment = moment
-        self._physics.refresh_masses()
+        self._physics.tracked.refresh_masses()
         self._gravity.bodies_changed()
 
     def add_mover(self, name: str, path: Path) -> Mover:
@@ -310,6 +325,7 @@ class World(ForceAPI):
         schedule = self._schedule
         gravity = self._gravity
         physics = self._physics
+        tracked = physics.tracked
         # 1. inputs: scripts and keyboards turn into intents
         if schedule.inputs:
             run_hooks(schedule.inputs, self)
@@ -340,11 +356,11 @@ class World(ForceAPI):
             physics.step(field)
             lap(PHYSICS)
             # 7. forces: reverse integration for tracked bodies
-            if physics.solver.bodies:
+            if tracked.bodies:
                 physics.solve()
                 lap(FORCES)
             # 8. filter: perceived gravity for the bodies that perceive
-            if physics.perceivers:
+            if tracked.perceivers:
                 physics.filter()
                 lap(FILTER)
             # The forces are spent: a step with nothing else to do is bare again.
@@ -354,10 +370,11 @@ class World(ForceAPI):
             # Not a running sum: no drift over long runs (the epoch moves only when dt changes).
             self.time = self._epoch[1] + (self.steps - self._epoch[0]) * self._config.dt
             # the guard: nothing non-finite or runaway reaches the observers
-            if physics.solver.bodies and self._config.guard:
-                bad = physics.runaway()
+            if tracked.bodies and self._config.guard:
+                bad = tracked.active.runaway(RUNAWAY_FORCE)
                 if bad is not None:
-                    self._runaway(*bad)
+                    body_id, column, value = bad
+                    self._runaway(body_id, FORCE_COLUMNS[column], value, RUNAWAY_FORCE)
             if self.steps >= self._guard_next:
                 self._guard_all()
             # 9. observe: recorders, checks, views — read-only

@@ -22,7 +22,7 @@ def test_a_reading_is_the_solver_row_and_friction_is_contact_minus_normal() -> N
     world.step()
     f = world.forces("box")
     assert isinstance(f, BodyForces) and f.valid and f.split_valid
-    s = world.solver
+    s = world.readings()
     assert f.engine == tuple(s.engine[0]) and f.support == tuple(s.support[0])
     assert f.contact == tuple(s.contact[0]) and f.constraint == tuple(s.constraint[0])
     assert f.contact_friction == tuple(s.contact[0] - s.contact_normal[0])

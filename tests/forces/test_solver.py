@@ -436,6 +436,6 @@ def test_solver_arrays_are_finite() -> None:
     world = stack(WorldConfig(contact_split=True))
     world.track(*dynamic_names(world))
     world.run(0.5)
-    s = world.solver
+    s = world.readings()
     for arr in (s.engine, s.support, s.specific, s.contact, s.constraint):
         assert np.isfinite(arr[s.valid]).all()

@@ -6,13 +6,12 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-import numpy as np
 import pymunk
 import pytest
 
 from playground import World, WorldConfig
 from playground.cli import main
-from playground.world import physics as physics_mod
+from playground.world import world as world_mod
 from playground.world.guard import GUARD_EVERY, RunawayError
 
 STEPS = 400
@@ -83,9 +82,8 @@ def test_the_cli_reports_a_runaway_with_exit_1_and_keeps_the_recording(
     """Law: ``playground run`` turns a RunawayError into one line and exit code 1, and the
     recording holds every step before the one that ran away. (The force bound is lowered to 1 N
     so that the shipped ``incline`` level trips it once its crate rests on the slope.)"""
-    # The bound of both paths: the batch path's per-column array, the scalar path's float.
-    monkeypatch.setattr(physics_mod, "FORCE_BOUNDS", np.array([1.0, 1.0]))
-    monkeypatch.setattr(physics_mod, "RUNAWAY_FORCE", 1.0)
+    # The bound the world's step hands the tracked bodies, whichever implementation serves.
+    monkeypatch.setattr(world_mod, "RUNAWAY_FORCE", 1.0)
     out = tmp_path / "incline.csv"
     code = main(["run", "incline", "--record", str(out)])
     err = capsys.readouterr().err

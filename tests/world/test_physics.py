@@ -11,7 +11,10 @@ import pymunk.batch as batch
 import pytest
 from numpy.typing import NDArray
 
+from playground.forces.batch import BatchBodies
+from playground.forces.scalar import ScalarBodies
 from playground.gravity import Radial
+from playground.limits import RUNAWAY_FORCE
 from playground.world.config import WorldConfig
 from playground.world.world import World
 
@@ -42,7 +45,7 @@ def test_the_path_follows_the_count_and_the_scene(
     included; more than ``scalar_max_bodies`` take the batch path."""
     world = _pile(n, config)
     world.step()
-    assert world.on_scalar_path is scalar
+    assert (world.tracked_kind == "scalar") is scalar
 
 
 def test_substeps_in_a_crowded_space_take_the_batch_path() -> None:
@@ -51,15 +54,15 @@ def test_substeps_in_a_crowded_space_take_the_batch_path() -> None:
     world = _pile(3, WorldConfig(substeps=2))
     world.scalar_max_bodies = 4
     world.step()
-    assert world.on_scalar_path
+    assert world.tracked_kind == "scalar"
     world.add_box("crowd", mass=1.0, size=(0.5, 0.5), position=(20.0, 0.25))
     world.add_box("crowd2", mass=1.0, size=(0.5, 0.5), position=(22.0, 0.25))
     world.step()
-    assert not world.on_scalar_path
+    assert world.tracked_kind == "batch"
 
 
 class _Tilted:
-    """A field of a kind the scalar path does not know: it has no plain-float form."""
+    """A field of a kind the scalar implementation does not know: it has no plain-float form."""
 
     uniform = False
 
@@ -74,22 +77,23 @@ def test_a_field_that_varies_takes_the_scalar_path_for_few_bodies() -> None:
     world = _pile(3)
     world.gravity = Radial(radius=1.0, center=(0.0, -20.0))
     world.step()
-    assert world.on_scalar_path
+    assert world.tracked_kind == "scalar"
     world.scalar_max_bodies = 3
     world.add_box("untracked", mass=1.0, size=(0.5, 0.5), position=(20.0, 0.25))
     world.step()
-    assert not world.on_scalar_path
+    assert world.tracked_kind == "batch"
     world.remove("untracked")
     world.step()
-    assert world.on_scalar_path
+    assert world.tracked_kind == "scalar"
     world.gravity = _Tilted()
     world.step()
-    assert not world.on_scalar_path
+    assert world.tracked_kind == "batch"
 
 
 def test_the_readings_move_with_a_switch() -> None:
-    """Law: switching paths mid-run hands the state over: a run that leaves the scalar path after
-    one second reads what a run on the batch path throughout reads (within rounding)."""
+    """Law: switching implementations mid-run hands the state over: a run that leaves the scalar
+    implementation after one second reads what a run on the batch one throughout reads (within
+    rounding)."""
     switched, batch_only = _pile(3), _pile(3)
     batch_only.scalar_max_bodies = 0
     for world in (switched, batch_only):
@@ -98,7 +102,7 @@ def test_the_readings_move_with_a_switch() -> None:
     switched._replan()
     for world in (switched, batch_only):
         world.run(1.0)
-    assert not switched.on_scalar_path
+    assert switched.tracked_kind == "batch"
     a, b = switched.forces("b1"), batch_only.forces("b1")
     assert a.support == pytest.approx(b.support, rel=1e-12)
     assert switched.perceived_gravity("b1") == pytest.approx(batch_only.perceived_gravity("b1"))
@@ -109,12 +113,11 @@ def test_a_runaway_reading_names_its_body() -> None:
     with its id and the column (the world turns it into a RunawayError naming the body)."""
     world = _pile(2)
     world.run(0.1)
-    physics = world._physics
-    assert physics.runaway() is None
-    physics.scalar_on = False
-    physics.solver.engine[1, 1] = math.nan
-    body_id, column, value, _ = physics.runaway() or (0, ("", "", ""), 0.0, 0.0)
-    assert body_id == world.body("b1").id and column[0] == "engine force" and math.isnan(value)
+    tracked = world._physics.tracked.active
+    assert isinstance(tracked, ScalarBodies) and tracked.runaway(RUNAWAY_FORCE) is None
+    tracked.rows[1].ey = math.nan
+    body_id, column, value = tracked.runaway(RUNAWAY_FORCE) or (0, -1, 0.0)
+    assert body_id == world.body("b1").id and column == 1 and math.isnan(value)
 
 
 def _untracked_pile(n: int, config: WorldConfig | None = None) -> World:
@@ -183,13 +186,13 @@ def test_a_runaway_on_the_batch_path_looks_at_forces_not_torques() -> None:
     world = _pile(30)
     world.scalar_max_bodies = 0
     world.run(0.1)
-    physics = world._physics
-    assert not physics.scalar_on and physics.runaway() is None
-    physics.solver.engine_torque[4] = 1e300
-    assert physics.runaway() is None
-    physics.solver.engine[7, 0] = -1e300
-    body_id, column, value, _ = physics.runaway() or (0, ("", "", ""), 0.0, 0.0)
-    assert body_id == world.body("b7").id and column == ("engine force", "x", "N")
+    tracked = world._physics.tracked.active
+    assert isinstance(tracked, BatchBodies) and tracked.runaway(RUNAWAY_FORCE) is None
+    tracked.solver.engine_torque[4] = 1e300
+    assert tracked.runaway(RUNAWAY_FORCE) is None
+    tracked.solver.engine[7, 0] = -1e300
+    body_id, column, value = tracked.runaway(RUNAWAY_FORCE) or (0, -1, 0.0)
+    assert body_id == world.body("b7").id and column == 0
     assert value == -1e300
 
 
@@ -215,7 +218,7 @@ def test_a_field_alone_moves_bodies_as_the_full_batch_path_does(push: str) -> No
                 world.body("b7").torque = -2.0
             world.step()
     lean, full = worlds
-    assert not lean._physics.solver.bodies and full._physics.solver.bodies
+    assert not lean.tracked_bodies and full.tracked_bodies
     for name in lean.names:
         a, b = lean.body(name), full.body(name)
         assert (a.position, a.angle, a.velocity, a.angular_velocity) == (

@@ -1,20 +1,21 @@
-"""The contact split on the scalar path: each tracked body's arbiter impulses in plain floats.
+"""The contact split of the scalar implementation: each tracked body's arbiter impulses in plain
+floats.
 
-The sums of the vectorised contact split
-(:class:`~playground.forces.contact_split.ContactSplit`), read body by body with
-``Body.each_arbiter`` instead of one batch read of every arbiter in the space. Inside that
-callback Chipmunk presents each arbiter from the body's side: ``total_impulse`` is the impulse
-the body received and ``normal`` points away from it, so they are the vector path's +J, +n for
-body A and −J, −n for body B, bit for bit (negation is exact). A body's impulses are summed in
-the order of their values, as there, so both paths give the same sums. The arbiters are read
-through Chipmunk's iterator and getters directly (:mod:`playground._engine.raw`: the same doubles,
-without an ``Arbiter`` object and a ``Vec2d`` per read).
+The sums of the batch contact split (:class:`~playground.forces.contact_split.ContactSplit`),
+read body by body with ``Body.each_arbiter`` instead of one batch read of every arbiter in the
+space. Inside that callback Chipmunk presents each arbiter from the body's side:
+``total_impulse`` is the impulse the body received and ``normal`` points away from it, so they
+are the batch implementation's +J, +n for body A and −J, −n for body B, bit for bit (negation is
+exact). A body's impulses are summed in the order of their values, as there, so both
+implementations give the same sums. The arbiters are read through Chipmunk's iterator and
+getters directly (:mod:`playground._engine.raw`: the same doubles, without an ``Arbiter`` object and
+a ``Vec2d`` per read).
 
 An arbiter that may report an impulse Chipmunk did not apply makes its bodies' split unknown for
-the step, by the vector path's rule (:meth:`ContactSplit._stale`): a continuing contact when the
-warm start was rescaled, and with ``collision_persistence`` > 1 a first contact from an arbiter
-that may still have been cached. The pairs of recent substeps are kept for that rule, for the
-tracked bodies' arbiters only (the only ones whose split is read).
+the step, by the batch implementation's rule (:meth:`ContactSplit._stale`): a continuing contact
+when the warm start was rescaled, and with ``collision_persistence`` > 1 a first contact from an
+arbiter that may still have been cached. The pairs of recent substeps are kept for that rule, for
+the tracked bodies' arbiters only (the only ones whose split is read).
 """
 
 from __future__ import annotations
@@ -25,12 +26,12 @@ from typing import Any
 import pymunk
 
 from playground._engine import raw
-from playground.scalar.row import Row
+from playground.forces.scalar.row import Row
 
 __all__ = ["ContactSums"]
 
 _MASK = (1 << 64) - 1
-"""Pair keys wrap at 64 bits, as the vector path's ``uint64`` keys do."""
+"""Pair keys wrap at 64 bits, as the batch implementation's ``uint64`` keys do."""
 
 Impulse = tuple[float, float, float, float]
 """(jx, jy, jnx, jny): an arbiter's impulse on the body and its normal part, N·s."""
@@ -91,7 +92,7 @@ class ContactSums:
                 r.body.each_arbiter(self._read_arbiter)
             if not impulses:
                 continue
-            # Summed in the order of their values, as the vector path does.
+            # Summed in the order of their values, as the batch implementation does.
             impulses.sort()
             jx, jy, jnx, jny = r.jx, r.jy, r.jnx, r.jny
             for vx, vy, vnx, vny in impulses:

@@ -1,6 +1,7 @@
-"""The scalar path stays scalar: a step of a world with one tracked body calls neither numpy nor
-``pymunk.batch`` (counted through patched modules), so the fast path cannot silently regress: a
-bare world, a level with the contact split and a level with a field that varies in space."""
+"""The scalar implementation stays scalar: a step of a world with one tracked body calls neither
+numpy nor ``pymunk.batch`` (counted through patched modules), so the fast path cannot silently
+regress: a bare world, a level with the contact split and a level with a field that varies in space.
+"""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ import pymunk.batch
 import pytest
 
 from playground import Stage, World, WorldConfig
+from playground.forces.scalar.bodies import _add_forces
 from playground.gravity import Uniform
 from playground.level import find, load
 from playground.scene import build
@@ -98,7 +100,7 @@ def test_one_tracked_body_steps_without_numpy_or_batch(monkeypatch: pytest.Monke
     np_calls, batch_calls = between_checks(world, monkeypatch)
     assert np_calls == []
     assert batch_calls == []
-    # It did the work: a reading and perceived gravity, as the vectorised path gives them.
+    # It did the work: a reading and perceived gravity, as the batch implementation gives them.
     f = world.forces("box")
     assert f.valid
     assert f.support == pytest.approx((0.0, 2.0 * 9.81), abs=TOL_SETTLING * 2.0 * 9.81)
@@ -109,7 +111,7 @@ def test_one_tracked_body_steps_without_numpy_or_batch(monkeypatch: pytest.Monke
 
 
 def test_the_count_sees_the_vectorised_path(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The counting itself works: with the scalar path off, the same steps call both."""
+    """The counting itself works: with the scalar implementation off, the same steps call both."""
     world = one_box()
     world.scalar_max_bodies = 0
     world.step()
@@ -126,14 +128,14 @@ def test_a_one_player_level_steps_without_numpy_or_batch(
     radial field: a force per body) with its one player makes no numpy call and no batch call,
     controller included, and reads the split or the field."""
     world = build(load(find(level))).world
-    assert len(world.solver.bodies) == 1
+    assert len(world.tracked_bodies) == 1
     # What the level asks of the step: the case this test is for.
     if level == "rest":
         assert world.config.contact_split
     else:
         assert not isinstance(world.gravity, Uniform) and not world.gravity.uniform
     assert between_checks(world, monkeypatch) == ([], [])
-    assert world.on_scalar_path
+    assert world.tracked_kind == "scalar"
     f = world.forces("player")
     assert f.valid
     if level == "rest":  # hovering: nothing touches the player, a known split of zero
@@ -142,3 +144,25 @@ def test_a_one_player_level_steps_without_numpy_or_batch(
         m = world.body("player").mass
         gx, gy = world.gravity_at("player")
         assert math.dist(f.passive, (m * gx, m * gy)) <= TOL_FIELD * m * math.hypot(gx, gy)
+
+
+def test_the_write_adds_to_the_force_and_spares_an_idle_sleeper() -> None:
+    """Law: a field's force handed body by body adds to what a body has; with sleeping on, a body
+    left with no force and no torque is not written (a write restarts its idle clock), so it falls
+    asleep; written every step it never does."""
+    space = pymunk.Space()
+    space.sleep_time_threshold = 0.3
+    space.idle_speed_threshold = 0.01
+    pushed, idle = pymunk.Body(2.0, 1.0), pymunk.Body(2.0, 1.0)
+    idle.position = (5.0, 0.0)
+    for body in (pushed, idle):
+        space.add(body, pymunk.Circle(body, 0.5))
+    pushed.force = (1.0, 2.0)
+    _add_forces({pushed: (0.5, -3.0)}, sleeping=True)
+    assert pushed.force == (1.5, -1.0)
+    for sleeping, asleep in ((False, False), (True, True)):
+        idle.activate()
+        for _ in range(20):  # 2 s, well past the threshold
+            _add_forces({idle: (0.0, 0.0)}, sleeping=sleeping)
+            space.step(0.1)
+        assert idle.is_sleeping is asleep

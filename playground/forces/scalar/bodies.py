@@ -1,104 +1,119 @@
-"""The scalar path: reverse integration and perceived gravity in plain floats, for few bodies.
+"""The scalar implementation of the tracked bodies: reverse integration and perceived gravity in
+plain floats, one body at a time, for few bodies.
 
 Every numpy call costs about 1 µs and every ``pymunk.batch`` call about 5 µs whatever the body
-count, so below :data:`SCALAR_MAX_BODIES` tracked bodies the vectorised
-:class:`~playground.forces.solver.ForceSolver` and
-:class:`~playground.gravity.PerceivedGravity` cost more than the physics. This path reads each
+count, so below :data:`SCALAR_MAX_BODIES` tracked bodies the batch implementation
+(:class:`~playground.forces.batch.BatchBodies`) costs more than the physics. This one reads each
 tracked body's attributes, does the same arithmetic in the same order in Python floats and
-filters with the same 1€ (and median-of-3) equations, so both paths give the same readings (to a
+filters with the same 1€ (and median-of-3) equations, so both give the same readings (to a
 unit in the last place: magnitudes come from ``math.hypot`` here and from numpy's complex ``abs``
-there). The contact split sums each body's arbiters (:mod:`playground.scalar.contacts`); a field
-that varies in space reaches the bodies as forces computed in plain floats
-(:mod:`playground.scalar.field`).
+there). The contact split sums each body's arbiters (:mod:`playground.forces.scalar.contacts`);
+a field that varies in space reaches the bodies as forces computed in plain floats, body by body.
 
-The world switches between the paths at a plan change; the state moves with it
-(:meth:`ScalarPath.load` and :meth:`ScalarPath.store`, see :mod:`playground.scalar.handoff`), so
-a run gives one answer whichever path served each step.
+The tracked set (:class:`~playground.forces.tracked.TrackedSet`) switches between the two at a
+plan change; the state moves with it (:meth:`ScalarBodies.load` and :meth:`ScalarBodies.store`,
+see :mod:`playground.forces.scalar.handoff`), so a run gives one answer whichever served each
+step.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Literal
 
+import numpy as np
 import pymunk
+from numpy.typing import NDArray
 
 from playground._engine import raw
 from playground.filters.one_euro import OneEuroFilter
 from playground.forces.ledger import ForceLedger
-from playground.forces.readings import BodyForces
+from playground.forces.readings import BodyForces, TrackedReadings
+from playground.forces.scalar import handoff
+from playground.forces.scalar.contacts import ContactSums
+from playground.forces.scalar.row import Row
 from playground.forces.solver import ForceSolver
 from playground.gravity import PerceivedGravity
-from playground.scalar import handoff
-from playground.scalar.contacts import ContactSums
-from playground.scalar.row import Row
 from playground.vec import Vec
 
-__all__ = ["SCALAR_MAX_BODIES", "ScalarPath"]
+if TYPE_CHECKING:
+    from playground.forces.tracked import FieldForces, FieldOnBodies
+
+__all__ = ["SCALAR_MAX_BODIES", "ScalarBodies"]
 
 SCALAR_MAX_BODIES = 28
-"""Most tracked bodies the scalar path serves: the measured crossover. On a pile with every box
-tracked and perceived, a step on the scalar path costs 0.11× the vectorised one at 1 body, 0.67×
-at 16, 0.97× at 28 and 1.07× at 32 (2026-12-01, after both paths were made leaner; it was 20
-when the crossover lay between 16 and 24). ``playground bench overhead`` measures it again:
-docs/performance.md."""
+"""Most tracked bodies the scalar implementation serves: the measured crossover. On a pile with
+every box tracked and perceived, a step served in plain floats costs 0.11× the batch one at 1
+body, 0.67× at 16, 0.97× at 28 and 1.07× at 32 (2026-12-01; it was 20 when the crossover lay
+between 16 and 24). ``playground bench overhead`` measures it again: docs/performance.md."""
 
 _NAN = math.nan
 _hypot = math.hypot
-FieldOnBodies = Mapping[pymunk.Body, Vec]
-"""A field's force (N) on each body it acts on this step."""
 
 
-class ScalarPath:
-    """Readings and perceived gravity of a few tracked bodies, one body at a time.
+class ScalarBodies:
+    """The tracked bodies in plain floats, one :class:`Row` each (see
+    :class:`~playground.forces.tracked.TrackedBodies`).
 
     ``contact_split`` and ``check_sleep`` mean what they mean for
-    :class:`~playground.forces.solver.ForceSolver`.
+    :class:`~playground.forces.solver.ForceSolver`; the rows come from the batch implementation's
+    (:meth:`load`).
 
     >>> from playground.gravity import Perception
-    >>> import numpy as np
     >>> space = pymunk.Space()
     >>> body = pymunk.Body(2.0, 1.0)
     >>> space.add(body, pymunk.Circle(body, 0.5))
     >>> solver, perceived = ForceSolver(), PerceivedGravity(Perception())
     >>> _ = solver.track(body)
     >>> perceived.resize(np.array([-1]))
-    >>> path = ScalarPath()
-    >>> path.load(solver, perceived)
-    >>> path.before_step()
+    >>> tracked = ScalarBodies(space)
+    >>> tracked.load(solver, perceived)
+    >>> tracked.before_step(None, 1)
     >>> space.step(0.01)
-    >>> path.after_substep(space)
-    >>> path.finish(dt=0.01, damping=1.0, space_gravity=(0.0, 0.0), ledger=ForceLedger())
-    >>> path.rows[0].ex, path.rows[0].valid  # free body: the engine did nothing
-    (0.0, True)
+    >>> tracked.after_substep(last=True, stamp=1, rescaled=False)
+    >>> tracked.finish(
+    ...     dt=0.01, substeps=1, damping=1.0, space_gravity=(0.0, 0.0), ledger=ForceLedger()
+    ... )
+    >>> tracked.reading(0).engine, tracked.reading(0).valid  # free body: the engine did nothing
+    ((0.0, 0.0), True)
     """
 
-    def __init__(self, *, contact_split: bool = False, check_sleep: bool = False) -> None:
+    kind: Literal["scalar", "batch"] = "scalar"
+    takes_field_by_body = True
+
+    def __init__(
+        self, space: pymunk.Space, *, contact_split: bool = False, check_sleep: bool = False
+    ) -> None:
+        self.space = space
         self.contact_split = contact_split
         self.check_sleep = check_sleep
+        self.threshold = 1.0
+        """m/s²: below this |perceived gravity| a row's up holds (the perception's, at load)."""
         self.rows: list[Row] = []
         self._one_euro: OneEuroFilter | None = None
         self._median = False
         self._dt = _NAN
         self._field = False
         self._summed = 0
+        self._held: list[tuple[pymunk.Body, pymunk.Vec2d, float]] = []
         self._contacts = ContactSums()
         # Whether a row may hold contact split readings (rows loaded, or split this step): only
         # then does a step without the split look for them to clear.
         self._split_held = False
 
-    # -- hand-off with the vectorised path ----------------------------------------------------
+    # -- hand-off with the batch implementation -------------------------------------------------
 
     def load(self, solver: ForceSolver, perceived: PerceivedGravity) -> None:
-        """Take over the state of the vectorised path (at a plan change, not per step)."""
+        """Take over the state of the batch implementation (at a plan change, not per step)."""
         self.rows, self._one_euro, self._median, history = handoff.load(solver, perceived)
+        self.threshold = perceived.config.up_threshold
         self._split_held = True
         self._contacts.history = history
         self.refresh_masses()
 
     def store(self, solver: ForceSolver, perceived: PerceivedGravity) -> None:
-        """Hand the state back to the vectorised path (at a plan change, or before a read of its
-        arrays)."""
+        """Hand the state back to the batch implementation (at a plan change)."""
         handoff.store(self.rows, self._contacts.history, solver, perceived)
 
     def refresh_masses(self) -> None:
@@ -112,9 +127,13 @@ class ScalarPath:
 
     # -- per step (the order of ForceSolver's arithmetic, float by float) ----------------------
 
-    def before_step(self, field: FieldOnBodies | None = None) -> None:
-        """v₀, ω₀ and the forces about to be integrated, read from each body; ``field``: the
-        force of a field that varies in space on each body, included in those forces."""
+    def before_step(self, field: FieldForces | FieldOnBodies | None, substeps: int) -> None:
+        """Add ``field``'s force (N) to each body it acts on, then read v₀, ω₀ and the forces
+        about to be integrated from each row's body; with ``substeps`` > 1, keep every dynamic
+        body's force to write again before each later substep."""
+        assert field is None or not callable(field)
+        if field is not None:
+            _add_forces(field, sleeping=self.check_sleep)
         self._field = field is not None
         self._summed = 0
         split = self.contact_split
@@ -134,10 +153,16 @@ class ScalarPath:
             if split:
                 r.jx = r.jy = r.jnx = r.jny = 0.0
                 r.unknown = False
+        if substeps > 1:
+            self._held = _forces_on(self.space)
 
-    def after_substep(
-        self, space: pymunk.Space, *, last: bool = True, stamp: int = 0, rescaled: bool = False
-    ) -> None:
+    def before_substep(self) -> None:
+        """Every dynamic body's force and torque of the step's start, written again."""
+        for body, held_force, held_torque in self._held:
+            body.force = held_force
+            body.torque = held_torque
+
+    def after_substep(self, *, last: bool, stamp: int, rescaled: bool) -> None:
         """Velocities after a substep (summed for the damping term unless it is the ``last``); a
         body asleep after any substep has no reading. With the contact split, its arbiter
         impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
@@ -162,16 +187,16 @@ class ScalarPath:
         if not last:
             self._summed += 1
         if self.contact_split:
-            self._contacts.accumulate(self.rows, space, stamp, rescaled)
+            self._contacts.accumulate(self.rows, self.space, stamp, rescaled)
 
     def finish(
         self,
         *,
         dt: float,
+        substeps: int,
         damping: float,
-        space_gravity: tuple[float, float],
+        space_gravity: Vec,
         ledger: ForceLedger,
-        substeps: int = 1,
     ) -> None:
         """The readings of this step (see :meth:`ForceSolver.finish`)."""
         if dt != self._dt:
@@ -243,10 +268,11 @@ class ScalarPath:
                     r.split = False
             self._split_held = False
 
-    def filter(self, dt: float, threshold: float, up_default: Callable[[pymunk.Body], Vec]) -> None:
+    def filter(self, dt: float, up_at: Callable[[pymunk.Body], Vec]) -> None:
         """Perceived gravity: −specific force through median-of-3 and 1€, and the up, held while
-        |perceived gravity| < ``threshold`` (m/s²); ``up_default`` gives a row's up until it has
-        felt a strong enough reading (see :class:`~playground.gravity.PerceivedGravity`)."""
+        |perceived gravity| < :attr:`threshold`; ``up_at`` gives a row's up until it has felt
+        a strong enough reading (see :class:`~playground.gravity.PerceivedGravity`)."""
+        threshold = self.threshold
         one = self._one_euro
         assert one is not None
         r_d = one._w_d * dt
@@ -284,34 +310,55 @@ class ScalarPath:
                     s = 1.0 / -norm
                     r.ux, r.uy = ox * s, oy * s
             if not isfinite(r.ux):
-                r.ux, r.uy = up_default(r.body)
+                r.ux, r.uy = up_at(r.body)
 
     # -- readings -------------------------------------------------------------------------------
 
-    def first_bad(self, bound: float) -> tuple[int, int] | None:
-        """(row, column) of the first engine force component that is not finite or beyond
-        ``bound`` (N), as :func:`playground.world.guard.first_bad` on the solver's engine rows."""
-        for i, r in enumerate(self.rows):
+    def runaway(self, bound: float) -> tuple[int, int, float] | None:
+        """The first engine force component (column 0: x, 1: y) that is not finite or beyond
+        ±``bound`` (N), as (body id, column, value), or None: what the batch implementation
+        finds."""
+        for r in self.rows:
             if not abs(r.ex) <= bound:
-                return i, 0
+                return r.body.id, 0, r.ex
             if not abs(r.ey) <= bound:
-                return i, 1
+                return r.body.id, 1, r.ey
         return None
 
-    def engine(self, row: int) -> Vec:
-        """The engine force of a row, N."""
-        r = self.rows[row]
-        return (r.ex, r.ey)
-
-    def gravity(self, row: int) -> Vec:
+    def perceived_gravity(self, row: int) -> Vec:
         """The filtered perceived gravity of a row, m/s²."""
         r = self.rows[row]
         return (r.gx, r.gy)
 
-    def up(self, row: int) -> Vec:
+    def perceived_up(self, row: int) -> Vec:
         """The held unit up of a row."""
         r = self.rows[row]
         return (r.ux, r.uy)
+
+    def perceived_up_and_gravity(self, row: int) -> tuple[Vec, Vec]:
+        """:meth:`perceived_up` and :meth:`perceived_gravity` of a row in one call."""
+        r = self.rows[row]
+        return (r.ux, r.uy), (r.gx, r.gy)
+
+    def table(self) -> TrackedReadings:
+        """Every row's readings as arrays (the batch implementation's arrays, built anew)."""
+        rows = self.rows
+        return TrackedReadings(
+            bodies=tuple(r.body for r in rows),
+            valid=np.array([r.valid for r in rows], dtype=bool),
+            engine=_pairs([(r.ex, r.ey) for r in rows]),
+            engine_torque=np.array([r.et for r in rows], dtype=np.float64),
+            support=_pairs([(r.sx, r.sy) for r in rows]),
+            specific=_pairs([r.sp for r in rows]),
+            passive=_pairs([(r.px, r.py) for r in rows]),
+            applied=_pairs([(r.ax, r.ay) for r in rows]),
+            contact=_pairs([(r.cx, r.cy) for r in rows]),
+            contact_normal=_pairs([(r.cnx, r.cny) for r in rows]),
+            constraint=_pairs([(r.kx, r.ky) for r in rows]),
+            split_valid=np.array([r.split for r in rows], dtype=bool),
+            perceived_gravity=_pairs([(r.gx, r.gy) for r in rows]),
+            perceived_up=_pairs([(r.ux, r.uy) for r in rows]),
+        )
 
     def reading(self, row: int) -> BodyForces:
         """The readings of a row as :meth:`ForceSolver.reading` gives them."""
@@ -330,6 +377,39 @@ class ScalarPath:
             constraint=(r.kx, r.ky),
             split_valid=r.split,
         )
+
+
+def _pairs(values: list[Vec]) -> NDArray[np.float64]:
+    """(x, y) values as an (N, 2) array (also when N is 0)."""
+    return np.array(values, dtype=np.float64).reshape(-1, 2)
+
+
+def _add_forces(forces: FieldOnBodies, *, sleeping: bool) -> None:
+    """Add ``forces`` (N) to the forces the bodies have. With ``sleeping`` on, a body whose
+    force and torque would be zero is left alone (setting a force restarts its idle clock), as
+    the batch implementation does."""
+    get_force, torque, set_force = raw.get_force, raw.torque, raw.set_force
+    for body, (fx, fy) in forces.items():
+        h = raw.handle(body)
+        f = get_force(h)
+        x, y = f.x + fx, f.y + fy
+        if sleeping and x == 0.0 and y == 0.0 and torque(h) == 0.0:
+            continue
+        set_force(h, x, y)
+
+
+def _forces_on(space: pymunk.Space) -> list[tuple[pymunk.Body, pymunk.Vec2d, float]]:
+    """Every dynamic body with a force or torque now (N, N·m), to write again before each later
+    substep (pymunk clears them after each): the others have none to re-apply, and writing
+    one would restart a sleeping world's idle clock, as the batch implementation avoids too."""
+    held = []
+    for body in space.bodies:
+        force, torque = body.force, body.torque
+        if (force.x != 0.0 or force.y != 0.0 or torque != 0.0) and (
+            body.body_type == pymunk.Body.DYNAMIC
+        ):
+            held.append((body, force, torque))
+    return held
 
 
 def _split(rows: list[Row], dt: float) -> None:

@@ -1,5 +1,5 @@
-"""Laws of the contact split on the scalar path: each body's arbiter sums equal the vectorised
-path's bit for bit, and a step whose split may be wrong is unknown on both."""
+"""Laws of the contact split of the scalar implementation: each body's arbiter sums equal the
+batch implementation's bit for bit, and a step whose split may be wrong is unknown on both."""
 
 from __future__ import annotations
 
@@ -53,12 +53,11 @@ def _same(a: tuple[float, float], b: tuple[float, float]) -> bool:
 def test_a_body_with_many_arbiters_reads_the_same_split(
     seed: int, persistence: int, callbacks: bool, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """Law: on a body with several arbiters at once, the scalar path's contact, contact normal,
-    constraint and split_valid equal the vectorised path's bit for bit, every step, with
-    arbiters dropped at once or kept three steps, and where cffi callbacks are refused (the
-    arbiters are then iterated by pymunk); the scene does give known splits, unknown ones
-    (first contacts from cached arbiters) with persistence 3, and bodies with three or more
-    arbiters."""
+    """Law: on a body with several arbiters at once, the scalar implementation's contact, contact
+    normal, constraint and split_valid equal the batch implementation's bit for bit, every step,
+    with arbiters dropped at once or kept three steps, and where cffi callbacks are refused (the
+    arbiters are then iterated by pymunk); the scene does give known splits, unknown ones (first
+    contacts from cached arbiters) with persistence 3, and bodies with three or more arbiters."""
     if not callbacks:
         monkeypatch.setattr(raw, "arbiter_callback", lambda visit: None)
     scalar, vector = (_plank_on_balls(m, seed, persistence) for m in (10**6, 0))
@@ -66,7 +65,7 @@ def test_a_body_with_many_arbiters_reads_the_same_split(
     for _ in range(STEPS):
         scalar.step()
         vector.step()
-        assert scalar.on_scalar_path and not vector.on_scalar_path
+        assert scalar.tracked_kind == "scalar" and vector.tracked_kind == "batch"
         for name in scalar.names:
             a, b = scalar.forces(name), vector.forces(name)
             assert a.split_valid == b.split_valid, name
@@ -110,20 +109,20 @@ def _split_turned_off(world: World, scalar_max: int) -> tuple[bool, tuple[float,
 
 def test_turning_the_split_off_clears_its_readings_on_both_paths() -> None:
     """Law: the step after the contact split is turned off, a body has no split reading (not
-    valid, contact NaN) on the scalar path as on the vectorised one."""
+    valid, contact NaN) on the scalar implementation as on the vectorised one."""
     results = []
     for most in (10**6, 0):
         world = _plank_on_balls(most, 0, 1)
         results.append(_split_turned_off(world, most))
-        assert world.on_scalar_path == (most > 0)
+        assert (world.tracked_kind == "scalar") == (most > 0)
     for valid, contact in results:
         assert not valid and all(math.isnan(c) for c in contact)
 
 
 def test_split_readings_handed_to_the_scalar_path_with_the_split_off_are_cleared() -> None:
-    """Law: when the world moves to the scalar path at the moment the split is turned off, the
-    split readings the vectorised path held are cleared on the first scalar step."""
+    """Law: when the world moves to the scalar implementation at the moment the split is turned
+    off, the split readings the batch implementation held are cleared on the first scalar step."""
     world = _plank_on_balls(0, 0, 1)
     valid, contact = _split_turned_off(world, 10**6)
-    assert world.on_scalar_path
+    assert world.tracked_kind == "scalar"
     assert not valid and all(math.isnan(c) for c in contact)

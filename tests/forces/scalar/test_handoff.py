@@ -1,4 +1,4 @@
-"""Laws of the hand-off between the paths: the state loaded from the vectorised path and stored
+"""Laws of the hand-off between the implementations: the state loaded from the batch one and stored
 back is the state it had, readings, split, recent pairs and filter included."""
 
 from __future__ import annotations
@@ -7,12 +7,20 @@ import numpy as np
 
 from playground import World, WorldConfig
 from playground.filters.chain import FilterChain
+from playground.forces.batch import BatchBodies
+from playground.forces.scalar import handoff
 from playground.gravity import Perception
-from playground.scalar import handoff
+
+
+def _batch(world: World) -> BatchBodies:
+    """The world's batch implementation (it holds the arrays whether it serves or not)."""
+    batch = world._physics.tracked._batch
+    assert isinstance(batch, BatchBodies)
+    return batch
 
 
 def _arrays(world: World) -> dict[str, object]:
-    solver, perceived = world.solver, world.perceived
+    solver, perceived = _batch(world).solver, _batch(world).perceived
     chain = perceived._filter
     stages = chain.stages if isinstance(chain, FilterChain) else (chain,)
     out: dict[str, object] = {
@@ -39,7 +47,7 @@ def _equal(a: dict[str, object], b: dict[str, object]) -> bool:
 
 
 def test_load_then_store_gives_back_the_state() -> None:
-    """Law: on a world run on the vectorised path (split on, arbiters kept three steps, a
+    """Law: on a world run on the batch implementation (split on, arbiters kept three steps, a
     median-of-3 before the 1€), loading and storing changes no array; the rows hold the values
     the arrays hold."""
     world = World(WorldConfig(contact_split=True, perception=Perception(spike_filter=True)))
@@ -52,7 +60,7 @@ def test_load_then_store_gives_back_the_state() -> None:
     world.run(0.5)
     before = _arrays(world)
     assert before["pairs"]  # the recent pairs are there to move
-    solver, perceived = world.solver, world.perceived
+    solver, perceived = _batch(world).solver, _batch(world).perceived
     rows, _, median, history = handoff.load(solver, perceived)
     assert median
     assert [(r.ex, r.ey, r.split) for r in rows] == [

@@ -1,4 +1,4 @@
-"""One tracked body's state on the scalar path, in plain floats.
+"""One tracked body's state in the scalar implementation, in plain floats.
 
 A :class:`Row` holds what :class:`~playground.forces.solver.ForceSolver` and
 :class:`~playground.gravity.PerceivedGravity` keep in one row of their arrays: the step's

@@ -1,10 +1,10 @@
-"""Moving the tracked bodies' state between the vectorised path and the scalar path.
+"""Moving the tracked bodies' state between the batch and the scalar implementation.
 
 At a plan change (never per step) the world hands the state of
 :class:`~playground.forces.solver.ForceSolver` and :class:`~playground.gravity.PerceivedGravity`
 (readings, the contact split, the pairs of recent substeps, the filters' state) to the scalar
-path's rows (:func:`load`), and back (:func:`store`, also before a caller reads the arrays), so a
-run gives one answer whichever path served each step.
+implementation's rows (:func:`load`), and back (:func:`store`), so a run gives one answer
+whichever served each step.
 """
 
 from __future__ import annotations
@@ -18,9 +18,9 @@ from numpy.typing import NDArray
 from playground.filters.chain import FilterChain
 from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
+from playground.forces.scalar.row import Row
 from playground.forces.solver import ForceSolver
 from playground.gravity import PerceivedGravity
-from playground.scalar.row import Row
 
 __all__ = ["Loaded", "load", "store"]
 
@@ -29,7 +29,7 @@ Loaded = tuple[list[Row], OneEuroFilter, bool, deque[tuple[int, frozenset[int]]]
 
 
 def load(solver: ForceSolver, perceived: PerceivedGravity) -> Loaded:
-    """The scalar path's state from the vectorised path's."""
+    """The scalar implementation's state from the batch implementation's."""
     if solver._keys_dirty:
         solver._rebuild_keys()
     rows = []
@@ -68,7 +68,7 @@ def store(
     solver: ForceSolver,
     perceived: PerceivedGravity,
 ) -> None:
-    """Write the scalar path's state into the vectorised path's arrays."""
+    """Write the scalar implementation's state into the batch implementation's arrays."""
     solver._split._pairs = deque(
         (stamp, np.array(sorted(keys), dtype=np.uint64)) for stamp, keys in history
     )

@@ -1,14 +1,13 @@
 """A gravity field that varies in space, body by body in plain floats, for a few bodies.
 
-The vectorised gravity stage evaluates such a field once per step at every named dynamic body
-(:meth:`GravityField.at <playground.gravity.GravityField.at>` on an (N, 2) array) and the physics
-stage adds the forces to a batch read of every body. For a few bodies both cost more than the
-physics, so the scalar path evaluates the shipped kinds of field point by point
-(:func:`point_field`) with the same float operations in the same order, and adds each body's
-force to what it has
-(:meth:`PlainField.write`). Forces agree with the vector path's bit for bit (a rule's magnitude
-is ``abs`` of a complex number, the C library's ``hypot`` as ``np.hypot``; ``math.hypot`` is
-not). A field of another kind keeps the vectorised path.
+The gravity stage evaluates such a field once per step at every named dynamic body
+(:meth:`GravityField.at <playground.gravity.GravityField.at>` on an (N, 2) array) and the batch
+implementation of the tracked bodies adds the forces to its read of every body. For a few bodies
+both cost more than the physics, so while the scalar implementation serves, the shipped kinds of
+field are evaluated point by point (:func:`point_field`) with the same float operations in the
+same order, and it adds each body's force to what it has. Forces agree with the vectorised ones
+bit for bit (a rule's magnitude is ``abs`` of a complex number, the C library's ``hypot`` as
+``np.hypot``; ``math.hypot`` is not). A field of another kind is always evaluated vectorised.
 
 >>> from playground.gravity import GravityRule, Radial
 >>> body = pymunk.Body(2.0, 1.0)
@@ -24,12 +23,13 @@ not). A field of another kind keeps the vectorised path.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 
 import pymunk
 
 from playground._engine import raw
-from playground.gravity import GravityField, GravityRule, Radial, RotatingRoom, Uniform, Zones
+from playground.gravity.field import GravityField, Radial, RotatingRoom, Uniform, Zones
+from playground.gravity.rule import GravityRule
 from playground.vec import Vec
 
 __all__ = ["PlainField", "PointField", "point_field", "ruled"]
@@ -125,17 +125,3 @@ class PlainField:
             gx, gy = ruled(gx, gy, scale, direction)
             out[body] = (gx * m, gy * m)
         return out
-
-    @staticmethod
-    def write(forces: Mapping[pymunk.Body, Vec], *, sleeping: bool) -> None:
-        """Add ``forces`` to the forces the bodies have. With ``sleeping`` on, a body whose
-        force and torque would be zero is left alone (setting a force restarts its idle clock),
-        as the vectorised path does."""
-        get_force, torque, set_force = raw.get_force, raw.torque, raw.set_force
-        for body, (fx, fy) in forces.items():
-            h = raw.handle(body)
-            f = get_force(h)
-            x, y = f.x + fx, f.y + fy
-            if sleeping and x == 0.0 and y == 0.0 and torque(h) == 0.0:
-                continue
-            set_force(h, x, y)

@@ -1,6 +1,5 @@
 """Laws of a field evaluated body by body: the plain-float form of each shipped kind of field
-equals its vectorised ``at`` bit for bit, rules included, and forces reach the bodies as the
-vectorised write leaves them."""
+equals its vectorised ``at`` bit for bit, rules included."""
 
 from __future__ import annotations
 
@@ -22,7 +21,7 @@ from playground.gravity import (
     Zones,
     apply_rules,
 )
-from playground.scalar.field import PlainField, point_field, ruled
+from playground.gravity.plain import PlainField, point_field, ruled
 
 FIELDS: dict[str, GravityField] = {
     "uniform": Uniform((0.3, -9.81)),
@@ -60,7 +59,7 @@ def test_the_point_form_equals_the_vectorised_field(name: str) -> None:
 
 
 def test_a_field_of_another_kind_has_no_point_form() -> None:
-    """Law: a user's field (or zones holding one) is left to the vectorised path."""
+    """Law: a user's field (or zones holding one) is left to the batch implementation."""
 
     class Tilted:
         uniform = False
@@ -106,24 +105,3 @@ def test_forces_are_mass_times_the_ruled_field_where_each_body_is() -> None:
     forces = plain.forces(0.0)
     assert forces[a] == (-0.0, 2.0 * -9.81)
     assert forces[b] == (0.0, 2.0 * 2.4525)
-
-
-def test_the_write_adds_to_the_force_and_spares_an_idle_sleeper() -> None:
-    """Law: the field's force adds to what a body has; with sleeping on, a body left with no
-    force and no torque is not written (a write restarts its idle clock), so it falls asleep;
-    written every step it never does."""
-    space = pymunk.Space()
-    space.sleep_time_threshold = 0.3
-    space.idle_speed_threshold = 0.01
-    pushed, idle = _body(0.0, 0.0), _body(5.0, 0.0)
-    for body in (pushed, idle):
-        space.add(body, pymunk.Circle(body, 0.5))
-    pushed.force = (1.0, 2.0)
-    PlainField.write({pushed: (0.5, -3.0)}, sleeping=True)
-    assert pushed.force == (1.5, -1.0)
-    for sleeping, asleep in ((False, False), (True, True)):
-        idle.activate()
-        for _ in range(20):  # 2 s, well past the threshold
-            PlainField.write({idle: (0.0, 0.0)}, sleeping=sleeping)
-            space.step(0.1)
-        assert idle.is_sleeping is asleep
