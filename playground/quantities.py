@@ -1,32 +1,21 @@
-"""Quantities: every reading of a body, declared once — its name, SI unit, kind, where it is read
-from, and its reader.
+"""Quantities: every reading of a body, named once — its name, SI unit, kind and where it comes
+from, and what uses it.
 
 A level's expectations check them (the level's ``quantity`` enum is :data:`CHECKED`), a recording
 stores them (its columns are each quantity's :attr:`Quantity.columns`, in this table's order) and
-``playground run --json`` reports them (:attr:`Quantity.report`); each reads the value with the
-same :attr:`Quantity.read`. Units are SI.
+``playground run --json`` reports them (:attr:`Quantity.report`). This is the vocabulary only:
+reading a quantity needs a built scene (:mod:`playground.scene.readings`). Units are SI.
 
 >>> QUANTITIES["support"].unit, QUANTITIES["support"].kind, QUANTITIES["support"].source
 ('N', 'vector', 'solver')
 >>> [c for q in RECORDED for c in q.columns][:6]
 ['x', 'y', 'vx', 'vy', 'angle', 'engine_x']
->>> from playground.level import find, load
->>> from playground.scene import build
->>> scene = build(load(find("rest")))
->>> scene.run(0.5)
->>> support, mass = QUANTITIES["support"], QUANTITIES["mass"]
->>> round(support.read(scene, "player")[1] / mass.read(scene, "player"), 2)
-9.81
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal
-
-if TYPE_CHECKING:
-    from playground.scene import Scene
+from typing import Literal
 
 __all__ = [
     "CHECKED",
@@ -37,7 +26,6 @@ __all__ = [
     "Quantity",
     "Source",
     "Value",
-    "sample",
 ]
 
 Value = float | tuple[float, float] | str | None
@@ -47,8 +35,6 @@ Kind = Literal["vector", "scalar", "text"]
 Source = Literal["body", "scene", "solver", "perception", "controller"]
 """Where a reading comes from: the pymunk body; the scene (tilt, state); the force solver (the
 body must be tracked); perception (tracked and perceived); the body's controller (an actor)."""
-
-Reader = Callable[["Scene", str], Value]
 
 
 @dataclass(frozen=True, slots=True)
@@ -61,7 +47,6 @@ class Quantity:
         kind: a vector (x, y), a scalar, or text.
         source: where it is read from (what the body must be for it to exist).
         doc: what it is.
-        read: ``read(scene, body)``, the current value (None where the body has none).
         columns: its columns in a recording, in order; none: not recorded.
         report: where ``run --json`` puts it: "" at the body's top level, "force" in its
             ``force`` object; None: not reported.
@@ -74,69 +59,10 @@ class Quantity:
     kind: Kind
     source: Source
     doc: str
-    read: Reader
     columns: tuple[str, ...] = ()
     report: str | None = None
     checked: bool = True
     split: bool = False
-
-
-def _mass(scene: Scene, body: str) -> Value:
-    return scene.world.body(body).mass
-
-
-def _position(scene: Scene, body: str) -> Value:
-    p = scene.world.body(body).position
-    return (p.x, p.y)
-
-
-def _velocity(scene: Scene, body: str) -> Value:
-    v = scene.world.body(body).velocity
-    return (v.x, v.y)
-
-
-def _angle(scene: Scene, body: str) -> Value:
-    return scene.world.body(body).angle
-
-
-def _angular_velocity(scene: Scene, body: str) -> Value:
-    return scene.world.body(body).angular_velocity
-
-
-def _tilt(scene: Scene, body: str) -> Value:
-    return scene.tilt(body)
-
-
-def _state(scene: Scene, body: str) -> Value:
-    return scene.state(body)
-
-
-def _solver(name: str) -> Reader:
-    """The force solver's reading ``name`` (a field of :class:`playground.forces.Forces`)."""
-
-    def read(scene: Scene, body: str) -> Value:
-        vec: tuple[float, float] = getattr(scene.world.forces(body), name)
-        return vec
-
-    return read
-
-
-def _perceived_gravity(scene: Scene, body: str) -> Value:
-    return scene.world.perceived_gravity(body)
-
-
-def _support_filtered(scene: Scene, body: str) -> Value:
-    return scene.support_filtered(body)
-
-
-def _controller(name: str) -> Reader:
-    """The controller's own reading ``name`` of the force it put on its body last step."""
-
-    def read(scene: Scene, body: str) -> Value:
-        vec: tuple[float, float] = getattr(scene.controllers[body].last_forces, name)
-        return vec
-
-    return read
 
 
 def _xy(name: str) -> tuple[str, str]:
@@ -151,7 +77,6 @@ def _force(name: str, doc: str, *, recorded: bool = True, split: bool = False) -
         "vector",
         "solver",
         doc,
-        _solver(name),
         columns=_xy(name) if recorded else (),
         report="force" if recorded else None,
         split=split,
@@ -160,18 +85,17 @@ def _force(name: str, doc: str, *, recorded: bool = True, split: bool = False) -
 
 def _own(name: str, doc: str) -> Quantity:
     """An actor's own reading of the force its controller put on it in the last step, N."""
-    return Quantity(name, "N", "vector", "controller", doc, _controller(name))
+    return Quantity(name, "N", "vector", "controller", doc)
 
 
 _TABLE = (
-    Quantity("mass", "kg", "scalar", "body", "the body's mass", _mass, report="", checked=False),
+    Quantity("mass", "kg", "scalar", "body", "the body's mass", report="", checked=False),
     Quantity(
         "position",
         "m",
         "vector",
         "body",
         "the body's position (its origin), world frame",
-        _position,
         columns=("x", "y"),
         report="",
     ),
@@ -181,7 +105,6 @@ _TABLE = (
         "vector",
         "body",
         "the body's velocity",
-        _velocity,
         columns=("vx", "vy"),
         report="",
     ),
@@ -191,7 +114,6 @@ _TABLE = (
         "scalar",
         "body",
         "the body's angle, counter-clockwise",
-        _angle,
         columns=("angle",),
         report="",
     ),
@@ -201,11 +123,8 @@ _TABLE = (
         "scalar",
         "body",
         "the body's spin, counter-clockwise",
-        _angular_velocity,
     ),
-    Quantity(
-        "tilt", "rad", "scalar", "scene", "angle between the body's axis and its up, 0..π", _tilt
-    ),
+    Quantity("tilt", "rad", "scalar", "scene", "angle between the body's axis and its up, 0..π"),
     _force("engine", "the engine's total force on the body (contacts and joints)"),
     _force("contact", "the contacts' force", split=True),
     _force("contact_normal", "the contacts' normal force", recorded=False, split=True),
@@ -220,7 +139,6 @@ _TABLE = (
         "vector",
         "perception",
         "the 1€-filtered support force, −m · perceived gravity",
-        _support_filtered,
         columns=_xy("support_filtered"),
         report="force",
         checked=False,
@@ -231,7 +149,6 @@ _TABLE = (
         "vector",
         "perception",
         "the gravity the body feels through its support (1€-filtered)",
-        _perceived_gravity,
         columns=_xy("perceived_gravity"),
         report="",
     ),
@@ -245,7 +162,6 @@ _TABLE = (
         "text",
         "scene",
         "the controller's state (grounded, airborne, …); none for a body without one",
-        _state,
         columns=("state",),
         report="",
     ),
@@ -259,14 +175,3 @@ RECORDED = tuple(q for q in _TABLE if q.columns)
 """What a recording stores, in its columns' order."""
 REPORTED = tuple(q for q in _TABLE if q.report is not None)
 """What ``run --json`` reports for each tracked body, in its keys' order."""
-
-
-def sample(q: Quantity, scene: Scene, body: str) -> Value:
-    """``q``'s reading of ``body`` now, or None where the body has none (a perception reading of
-    a body its world does not perceive)."""
-    try:
-        return q.read(scene, body)
-    except KeyError:
-        if q.source != "perception":
-            raise
-        return None

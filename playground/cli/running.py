@@ -33,7 +33,8 @@ from playground.cli.preflight import UsageError
 from playground.level.files import find
 from playground.level.loading import load
 from playground.limits import MAX_DT, MAX_SECONDS, MAX_TIME, MIN_DT
-from playground.quantities import REPORTED, Value, sample
+from playground.quantities import REPORTED, Value
+from playground.scene.readings import sample
 from playground.world.guard import RunawayError
 
 __all__ = ["PROGRESS_MIN_STEPS", "cmd_run", "configure"]

@@ -26,8 +26,9 @@ from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
 from playground.level.document import Level
 from playground.level.expect import Expectation, Reading
-from playground.quantities import CHECKED, QUANTITIES
+from playground.quantities import CHECKED
 from playground.scene import Scene
+from playground.scene.readings import READERS
 from playground.world.schedule import Stage
 from playground.world.world import World
 
@@ -50,7 +51,7 @@ class CheckResult:
 
 def read(scene: Scene, body: str, quantity: str) -> Value:
     """The current value of a quantity of a body (raw readings; SI; "" for no state)."""
-    value = QUANTITIES[quantity].read(scene, body)
+    value = READERS[quantity](scene, body)
     return "" if value is None else value
 
 

@@ -45,8 +45,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from playground.controller.states import State
-from playground.quantities import RECORDED, Quantity, Value, sample
+from playground.quantities import RECORDED, Quantity, Value
 from playground.scene import Scene
+from playground.scene.readings import sample
 from playground.world.schedule import Stage
 from playground.world.world import World
 

@@ -2,7 +2,7 @@
 
 :func:`build` turns a :class:`playground.level.Level` into a :class:`Scene` — settings, gravity,
 static geometry, props, movers, joints, actors, tracking, events and scripted inputs — ready to
-step. The scene also reads the quantities that expectations, recordings and the CLI report.
+step. Its quantities are read by :mod:`playground.scene.readings`.
 
 >>> from playground.level import find, load
 >>> scene = build(load(find("incline")))
