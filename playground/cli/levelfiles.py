@@ -44,12 +44,16 @@ def cmd_list(args: argparse.Namespace) -> int:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    """Validate level files; print every problem; exit 1 if any file has one."""
+    """Validate level files and build each scene, as ``run`` does; print every problem; exit 1
+    if any file has one."""
+    from playground.scene.scene import build
+
     failed = False
     for item in args.files:
         try:
             path = find(item)
             level = load(path)
+            build(level, str(path))
             print(f"ok      {item}: {level.title}")
         except LevelError as exc:
             failed = True

@@ -62,7 +62,7 @@ def cmd_run(args: argparse.Namespace) -> int:
             raise UsageError(str(exc)) from None
     path = find(args.level)
     level = load(path)
-    scene = build(level)
+    scene = build(level, str(path))
     seconds = level.settings.seconds if args.seconds is None else args.seconds
     # Whichever set the length is named: the flag, the replay (its steps), or the level file
     # (check bounds settings.seconds to what run allows without --long).
@@ -151,7 +151,7 @@ def _profile(path: Path, seconds: float) -> list[Any]:
     from playground.bench.profiler import top_functions
     from playground.scene import build
 
-    again = build(load(path))
+    again = build(load(path), str(path))
     return top_functions(lambda: again.run(seconds))
 
 

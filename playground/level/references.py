@@ -9,6 +9,7 @@ from playground.level.errors import Problem, suggest
 from playground.level.expect_rules import Context, check_expectation
 from playground.level.gravity import UniformGravity
 from playground.level.joints import STATIC
+from playground.level.lifetimes import lifetime_problems
 from playground.level.shapes import Ring
 from playground.level.timeline import FlipGravity, Remove, Spawn
 
@@ -42,11 +43,32 @@ def references(level: Level, assumed: frozenset[str] = frozenset()) -> Iterator[
                 yield Problem(f"props.{i}.shapes.{j}", "a ring belongs to a mover or geometry")
     for i, name in enumerate(level.tracking.bodies):
         yield from known(f"tracking.bodies.{i}", name, dynamic, "dynamic body")
+    spawned = {e.prop.name for e in level.events if isinstance(e, Spawn)}
+    at_setup = [n for n in names if n not in spawned]
+    setup_dynamic = {*(p.name for p in level.props), *actors}
     for i, joint in enumerate(level.joints):
         for end in ("a", "b"):
-            yield from known(f"joints.{i}.{end}", getattr(joint, end), [*names, STATIC], "body")
+            name = getattr(joint, end)
+            if name in spawned:
+                yield Problem(
+                    f"joints.{i}.{end}",
+                    f"{name!r} is spawned during the run; a joint is made at setup, between "
+                    "bodies of the setup",
+                )
+            else:
+                yield from known(f"joints.{i}.{end}", name, [*at_setup, STATIC], "body")
         if joint.a == joint.b:
             yield Problem(f"joints.{i}", "a joint needs two different bodies")
+        ends = (joint.a, joint.b)
+        if all(n in at_setup or n == STATIC for n in ends) and not setup_dynamic & set(ends):
+            # Chipmunk solves a joint on the bodies it can move: with neither end dynamic it
+            # fails its own assertion at the first step.
+            yield Problem(
+                f"joints.{i}",
+                f"a joint needs a dynamic body (a prop or an actor) at one end at least; "
+                f"{joint.a!r} and {joint.b!r} are {_kind(level, joint.a)} and "
+                f"{_kind(level, joint.b)}",
+            )
     for i, inp in enumerate(level.inputs):
         yield from known(f"inputs.{i}.actor", inp.actor, actors, "actor")
         if inp.nullify is not None:
@@ -72,6 +94,16 @@ def references(level: Level, assumed: frozenset[str] = frozenset()) -> Iterator[
             continue
         yield from check_expectation(f"expect.{i}", exp, context)
     yield from _check_catches(level)
+    yield from lifetime_problems(level)
+
+
+def _kind(level: Level, name: str) -> str:
+    """What kind of body ``name`` is, in words."""
+    if name == STATIC:
+        return "the fixed world"
+    if any(m.name == name for m in level.movers):
+        return "a mover (kinematic)"
+    return "dynamic"
 
 
 def _check_catches(level: Level) -> Iterator[Problem]:

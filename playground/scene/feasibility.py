@@ -13,13 +13,22 @@ from collections.abc import Iterator
 
 import pymunk
 
+from playground.gravity import GravityRule, Uniform
 from playground.level.derive import to_core
 from playground.level.document import Level
 from playground.level.errors import Problem
-from playground.limits import MAX_MASS_RATIO, MAX_OVERLAP, SPRING_LIMIT
+from playground.level.gravity import UniformGravity
+from playground.level.timeline import BodyGravity, FlipGravity, SetGravity
+from playground.limits import (
+    MAX_COORDINATE,
+    MAX_IMPULSE,
+    MAX_MASS_RATIO,
+    MAX_OVERLAP,
+    SPRING_LIMIT,
+)
 from playground.world.world import World
 
-__all__ = ["physical_problems"]
+__all__ = ["derived_problems", "physical_problems"]
 
 
 def physical_problems(
@@ -132,3 +141,49 @@ def _where(level: Level, name: str) -> str:
         if actor.name == name:
             return f"actors.{i}.position"
     return name
+
+
+def derived_problems(level: Level) -> Iterator[Problem]:
+    """Values the run derives from several keys, checked against the same bounds the run
+    applies: the field after each gravity event, in run order; each body's gravity rule; an
+    actor's jump impulse; how far its probe and hands reach from where it starts."""
+    yield from _gravity_problems(level)
+    for i, actor in enumerate(level.actors):
+        cfg = to_core(actor.controller)
+        impulse = cfg.mass * cfg.jump_speed
+        if impulse > MAX_IMPULSE:
+            yield Problem(
+                f"actors.{i}.controller.jump_speed",
+                f"a jump of {cfg.mass:g} kg at {cfg.jump_speed:g} m/s needs {impulse:.4g} N·s, "
+                f"more than {MAX_IMPULSE:g} N·s; lower the jump speed or the mass",
+            )
+        reach = cfg.height + max(cfg.probe_length, cfg.grab_reach, cfg.push_reach)
+        far = max(abs(v) for v in actor.position) + reach
+        if far > MAX_COORDINATE:
+            yield Problem(
+                f"actors.{i}.position",
+                f"its probe and hands reach {far:.6g} m from the origin, past "
+                f"{MAX_COORDINATE:g} m; move it closer to the origin",
+            )
+
+
+def _gravity_problems(level: Level) -> Iterator[Problem]:
+    """Each gravity event's field or rule, made as the run makes it (the core refuses what the
+    run would refuse), in the order the run applies them."""
+    field = level.gravity
+    g = field.g if isinstance(field, UniformGravity) else None
+    for i in sorted(range(len(level.events)), key=lambda k: (level.events[k].t, k)):
+        event = level.events[i]
+        try:
+            if isinstance(event, SetGravity):
+                g = event.g
+            elif isinstance(event, FlipGravity) and g is not None:
+                c, s = math.cos(event.angle), math.sin(event.angle)
+                g = (c * g[0] - s * g[1], s * g[0] + c * g[1])
+                Uniform(g)
+            elif isinstance(event, BodyGravity):
+                GravityRule(event.scale, event.direction)
+        except ValueError as exc:
+            key = "direction" if isinstance(event, BodyGravity) else "angle"
+            yield Problem(f"events.{i}.{key}", f"{exc}")
+            return

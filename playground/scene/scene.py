@@ -39,8 +39,9 @@ from playground.level.timeline import (
     SetGravity,
     Spawn,
 )
-from playground.scene.feasibility import physical_problems
+from playground.scene.feasibility import derived_problems, physical_problems
 from playground.vec import Vec
+from playground.world.config import WorldConfig
 from playground.world.world import World
 
 if TYPE_CHECKING:
@@ -97,19 +98,22 @@ class Scene:
 # -- building ------------------------------------------------------------------------------------
 
 
-def build(level: Level) -> Scene:
-    """Build the world a level describes.
+def build(level: Level, source: str | None = None) -> Scene:
+    """Build the world a level describes; ``source`` (its file) is what a refusal names
+    (default: the level's title).
 
     Order: settings and gravity, static geometry, movers, props, actors, joints, tracking, events,
-    scripted inputs. Problems only the engine can see are raised as :class:`LevelError`.
+    scripted inputs. Problems only the engine can see are raised as :class:`LevelError`, each at
+    its key: ``playground check`` builds the scene too, so what it accepts, ``run`` runs.
     """
+    where = level.title if source is None else source
     try:
-        return _build(level)
+        return _build(level, where)
     except (ValueError, KeyError, TypeError) as exc:
-        raise LevelError(level.title, [Problem("", f"cannot build the scene: {exc}")]) from None
+        raise LevelError(where, [Problem("", f"cannot build the scene: {exc}")]) from None
 
 
-def _build(level: Level) -> Scene:
+def _build(level: Level, where: str) -> Scene:
     settings = to_core(level.settings)
     config = dataclasses.replace(settings, perception=to_core(level.tracking.perception))
     world = World(config, gravity=to_core(level.gravity))
@@ -119,8 +123,14 @@ def _build(level: Level) -> Scene:
         world.add_static(*_shapes(static, shape))
     for mover in level.movers:
         _add_mover(world, mover)
-    for prop in level.props:
-        make_prop(world, prop)
+    problems: list[Problem] = []
+    for i, prop in enumerate(level.props):
+        try:
+            make_prop(world, prop)
+        except ValueError as exc:
+            problems.append(Problem(f"props.{i}", str(exc)))
+    if problems:
+        raise LevelError(where, problems)
     for actor in level.actors:
         scene.controllers[actor.name] = _add_actor(world, level, actor)
     joints = [world.add_constraint(_joint(world, joint)) for joint in level.joints]
@@ -131,9 +141,28 @@ def _build(level: Level) -> Scene:
     for event in level.events:
         world.at(event.t, _event(level, event, scene.controllers))
     problems = list(physical_problems(level, world, joints))
+    problems += _spawn_problems(level, config)
+    problems += derived_problems(level)
     if problems:
-        raise LevelError(level.title, problems)
+        raise LevelError(where, problems)
     return scene
+
+
+def _spawn_problems(level: Level, config: WorldConfig) -> list[Problem]:
+    """A spawned prop gets every check a prop of the setup gets, before the run: each is made in
+    a world of its own, as the spawn will make it (after the scene is built, so the bodies and
+    shapes of the setup are numbered as before)."""
+    problems: list[Problem] = []
+    spawns = [(i, e.prop) for i, e in enumerate(level.events) if isinstance(e, Spawn)]
+    if not spawns:
+        return problems
+    scratch = World(config)
+    for i, spawned in spawns:
+        try:
+            make_prop(scratch, spawned)
+        except ValueError as exc:
+            problems.append(Problem(f"events.{i}.prop", str(exc)))
+    return problems
 
 
 def _shapes(body: pymunk.Body, model: Shape) -> list[pymunk.Shape]:
