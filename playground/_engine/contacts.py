@@ -46,6 +46,7 @@ def _add_load(body: Any, arbiter: Any, data: Any) -> None:
     acc = _from_handle(data)
     jx, jy, _, _ = _impulse(arbiter)
     acc[0] += max(0.0, -(jx * acc[1] + jy * acc[2])) / acc[3]
+    acc[4] = True
 
 
 def _touch(body: Any, arbiter: Any, data: Any) -> None:
@@ -106,6 +107,19 @@ class Contacts:
         acc[3] = h
         _each_arbiter(self._h, _load_callback, self._data)
         return float(acc[0])
+
+    def load_and_touching(self, ux: float, uy: float, h: float) -> tuple[float, bool]:
+        """:meth:`load` and :meth:`touching` in one walk over the body's contacts."""
+        if _load_callback is None:
+            return load_by_pymunk(self._body, ux, uy, h), touching_by_pymunk(self._body)
+        acc = self._acc
+        acc[0] = 0.0
+        acc[1] = ux
+        acc[2] = uy
+        acc[3] = h
+        acc[4] = False
+        _each_arbiter(self._h, _load_callback, self._data)
+        return float(acc[0]), bool(acc[4])
 
     def touching(self) -> bool:
         """:func:`touching_by_pymunk` of the body."""

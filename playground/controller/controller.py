@@ -1,11 +1,11 @@
-"""The :class:`Controller`: a force-driven capsule player (or enemy) and its step, which reads
+"""The :class:`Controller`: a force-driven capsule player (or enemy) in a world, whose step reads
 sense → decide → act.
 
-Its state lives here; the parts of its step live in their own modules, bound here as its
-methods: :mod:`~playground.controller.sensing` (probe, up, load),
-:mod:`~playground.controller.states` (the state machine), :mod:`~playground.controller.grab`
-(grab, hang, climb), :mod:`~playground.controller.laws` (the force laws) and
-:mod:`~playground.controller.switches` (gravity switches).
+It holds its body, its hooks, its config, its :class:`~playground.controller.laws.Laws` and its
+state between steps; the phases are functions of their own modules:
+:mod:`~playground.controller.sensing`, :mod:`~playground.controller.decision`,
+:mod:`~playground.controller.action` (with :mod:`~playground.controller.grab` and
+:mod:`~playground.controller.switches` putting grips and gravity switches into the world).
 """
 
 from __future__ import annotations
@@ -17,27 +17,29 @@ from collections.abc import Callable
 
 import pymunk
 
-from playground._engine import raw
-from playground._engine.contacts import Contacts
-from playground._engine.reach import Reach
-from playground._engine.sweep import Sweep
-from playground.controller import grab, laws, sensing, states, switches
+from playground._engine.state import body_state
+from playground.controller import switches
 from playground.controller._vec import unit_or
+from playground.controller.action import NO_FORCES, ControllerForces, act, exert
 from playground.controller.config import ControllerConfig
-from playground.controller.laws import NO_FORCES, ControllerForces
-from playground.controller.sensing import GroundHit
+from playground.controller.decision import decide
+from playground.controller.grab import hold
+from playground.controller.laws import Laws
+from playground.controller.sensing import GroundHit, Sensed, Senses
 from playground.controller.spring import TWO_PI, stable_hover
-from playground.controller.states import State
+from playground.controller.states import ControllerState, State, Transition
 from playground.intents import IDLE, Intent, IntentSource
 from playground.params import finite
 from playground.vec import Vec
 from playground.world.schedule import Stage
 from playground.world.world import World
 
-__all__ = ["Controller"]
+__all__ = ["DEFAULT_CONFIG", "DEFAULT_LAWS", "Controller"]
 
 DEFAULT_CONFIG = ControllerConfig()
 """The configuration a controller gets unless given one."""
+DEFAULT_LAWS = Laws()
+"""The force laws a controller follows unless given others."""
 
 _groups = itertools.count(1)
 
@@ -74,6 +76,10 @@ class Controller:
     weight as a contact load (its accelerometer reads its own weight's worth, not the player's).
     Hover, drive, jump and push are SUPPORT on the player; air steering is APPLIED (nobody feels
     it); the grip is a real joint, so the solver reads it as an engine force.
+
+    Each step (:meth:`step`, the CONTROL stage's hook) is ``sense`` (:class:`Senses`) →
+    ``decide`` → ``act`` through :attr:`laws`; its results are the public readings below
+    (:attr:`sensed`, :attr:`control_state`, :attr:`last_forces`, :attr:`transition`).
     """
 
     def __init__(
@@ -84,14 +90,19 @@ class Controller:
         config: ControllerConfig = DEFAULT_CONFIG,
         source: IntentSource | None = None,
         angle: float = 0.0,
+        laws: Laws = DEFAULT_LAWS,
     ) -> None:
         if not isinstance(config, ControllerConfig):
             raise ValueError(f"config: expected a ControllerConfig, got {config!r}")
+        if not isinstance(laws, Laws):
+            raise ValueError(f"laws: expected a Laws, got {laws!r}")
         finite("angle", angle)
-        omega = stable_hover(config, world.config.dt)
+        stable_hover(config, world.config.dt)
         self.world = world
         self.name = name
         self.config = config
+        self.laws = laws
+        """The force laws it follows (replace one with ``dataclasses.replace``)."""
         self.source = source
         half = config.half_length
         moment = (
@@ -106,70 +117,27 @@ class Controller:
         shape.friction = 0.8
         group = next(_groups)
         shape.filter = pymunk.ShapeFilter(group=group)
-        self._filter = pymunk.ShapeFilter(group=group)
-        self._sweep = Sweep(world.space, self._filter)
-        self._reach = Reach(world.space, self._filter)
         self.body = body
-        # The body's cpBody*: the step reads its state through the C getters
-        # (playground._engine.raw).
-        self._h = raw.handle(body)
-        self._contacts = Contacts(body)
         self.shape = shape
         world.add(name, body, shape)
         world.track(name)
-
-        self._omega = omega
-        self._cos_slope = math.cos(config.max_slope)
-        self._wb = TWO_PI * config.balance_frequency
-        self._up_threshold = world.config.perception.up_threshold
+        self.senses = Senses(world, name, body, pymunk.ShapeFilter(group=group))
 
         self.intent: Intent = IDLE
-        self.state = State.AIRBORNE
         g = world.gravity_at(name)
-        self.up: Vec = unit_or(-g[0], -g[1], (0.0, 1.0))
-        self.probe: GroundHit | None = None
+        self.sensed = Sensed(body=body_state(body), up=unit_or(-g[0], -g[1], (0.0, 1.0)))
+        """What the last step sensed (before the first: the body as built, up against gravity)."""
+        self.control_state = ControllerState()
+        """The state after the last step's decisions."""
         self.last_forces: ControllerForces = NO_FORCES
-        self.pushed: tuple[Vec, Vec] | None = None
-        """Where (m) the last step's push acted on the pushed body, and the force on it (N)."""
-        self.load: float = 0.0
-        """Load borne from above in the last step: contacts and the push's reaction, N."""
-        self.contact_load: float = 0.0
-        """The contacts' part of :attr:`load`, N."""
-        self.joint: pymunk.PivotJoint | None = None
-        self._held_shape: pymunk.Shape | None = None
-        self._jump_held = False
-        self._jump_pressed_at = -math.inf
-        self._grounded_at = -math.inf
-        self._last_ground: GroundHit | None = None
-        # The kinematic ground under us last step and its velocity (m/s) and spin (rad/s).
-        self._ground_motion: tuple[pymunk.Body, float, float, float] | None = None
-        self._rising = False
-        self._saturated = 0.0
-        self._still = 0.0
-        self._getup_at = 0.0
-        self._getup_from = 0.0
-        self._gravity_wish: Vec | None = None
-        self._nullify_wish: str | None = None
-        # The body's state, read once at the start of each control step: position (m), velocity
-        # (m/s), mass (kg). Nothing in the control stage moves a body (forces go to the ledger
-        # until the physics stage), and each read from pymunk builds a new Vec2d.
-        self._px = self._py = self._vx = self._vy = 0.0
-        self._m = config.mass
-        # The world's settings (dt, substeps), read once a step with the body's state:
-        # World.config is a property, and the step's parts would read it five times.
-        self._world_config = world.config
-        # The world's cpSpace* (its space is made with it and never replaced), and the field's
-        # uniformity and our gravity rule as of World.gravity_version: they change only through
-        # the world's setters, and sense reads them again when that count has moved.
-        self._space_h = raw.space_handle(world.space)
-        self._gravity_version = -1
-        self._uniform_field = True
-        self._gravity_rule = world.gravity_rule(name)
+        """The forces of the last step."""
+        self.transition: Transition | None = None
+        """The change of :attr:`state` in the last step (None: it stayed)."""
 
         self.removed = False
-        self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self._control)]
+        self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self.step)]
         if source is not None:
-            self._hooks.insert(0, (Stage.INPUTS, self._read_source))
+            self._hooks.insert(0, (Stage.INPUTS, self.read_source))
         for stage, hook in self._hooks:
             world.on(stage, hook)
 
@@ -178,21 +146,59 @@ class Controller:
         tuning panel). ValueError, naming the limit, if the spring would be unstable at the
         world's dt."""
         config = dataclasses.replace(self.config, hover_frequency=frequency, hover_damping=damping)
-        omega = stable_hover(config, self.world.config.dt)
+        stable_hover(config, self.world.config.dt)
         self.config = config
-        self._omega = omega
 
     def remove(self) -> None:
         """Take the controller out of its world: its grip, body, shape and hooks go."""
         if self.removed:
             return
-        self._release(self.world)
+        state = self.control_state
+        hold(self.world, state.grip, None, self.intent, self.config, self.world.config.dt)
+        self.control_state = dataclasses.replace(state, grip=None)
         self.world.remove(self.name)
         for stage, hook in self._hooks:
             self.world.off(stage, hook)
         self.removed = True
 
     # -- reading ---------------------------------------------------------------------------------
+
+    @property
+    def state(self) -> State:
+        """What the state machine is doing (``control_state.state``)."""
+        return self.control_state.state
+
+    @property
+    def up(self) -> Vec:
+        """The controller's up (unit), as the last step sensed it."""
+        return self.sensed.up
+
+    @property
+    def probe(self) -> GroundHit | None:
+        """The ground the last step's probe found (None: none)."""
+        return self.sensed.ground
+
+    @property
+    def load(self) -> float:
+        """Load borne from above in the last step: contacts and the push's reaction, N."""
+        return self.sensed.load
+
+    @property
+    def contact_load(self) -> float:
+        """The contacts' part of :attr:`load`, N."""
+        return self.sensed.contact_load
+
+    @property
+    def pushed(self) -> tuple[Vec, Vec] | None:
+        """Where (m) the last step's push acted on the pushed body, and the force on it (N)."""
+        pushed = self.last_forces.pushed
+        return None if pushed is None else (pushed[1], pushed[2])
+
+    @property
+    def joint(self) -> pymunk.PivotJoint | None:
+        """The grip's joint (None: not holding)."""
+        grip = self.control_state.grip
+        return None if grip is None else grip.joint
 
     @property
     def mass(self) -> float:
@@ -204,12 +210,14 @@ class Controller:
     @property
     def hover_stiffness(self) -> float:
         """The hover spring's stiffness k = m·(2πf)², N/m, for the mass now."""
-        return self.mass * self._omega * self._omega
+        omega = TWO_PI * self.config.hover_frequency
+        return self.mass * omega * omega
 
     @property
     def hover_damping_coefficient(self) -> float:
         """The hover's damping c = 2ζ·m·2πf, N·s/m, for the mass now."""
-        return 2.0 * self.config.hover_damping * self.mass * self._omega
+        omega = TWO_PI * self.config.hover_frequency
+        return 2.0 * self.config.hover_damping * self.mass * omega
 
     @property
     def axis(self) -> Vec:
@@ -227,14 +235,16 @@ class Controller:
     @property
     def grip(self) -> float:
         """Magnitude of the grip joint's force in the last step, N (0 when not hanging)."""
-        if self.joint is None:
+        joint = self.joint
+        if joint is None:
             return 0.0
         cfg = self.world.config
-        return float(self.joint.impulse) / (cfg.dt / cfg.substeps)
+        return self.laws.grip(float(joint.impulse), cfg.dt / cfg.substeps)
 
     # -- the step --------------------------------------------------------------------------------
 
-    def _read_source(self, world: World) -> None:
+    def read_source(self, world: World) -> None:
+        """The INPUTS stage's hook: take this step's intent from the source."""
         assert self.source is not None
         if self.removed:
             return
@@ -244,38 +254,26 @@ class Controller:
             raise ValueError(f"{self.name}: the intent source returned {intent!r}, not an Intent")
         self.intent = intent
 
-    def _control(self, world: World) -> None:
-        """The CONTROL stage's hook: one step of the controller."""
+    def step(self, world: World) -> None:
+        """The CONTROL stage's hook: one step of the controller, sense → decide → act."""
         if self.removed:
             return
-        gx, gy = self._sense(world)
-        self._decide(world)
-        self._act(world, gx, gy)
-
-    # The parts of the step, defined in the modules named.
-    # sense: the body, the gravity at it, up, the ground under it, the load on it
-    _sense = sensing.sense
-    _gravity = sensing.gravity
-    _probe = sensing.probe
-    _ground_acceleration = sensing.ground_acceleration
-    _contact_load = sensing.contact_load
-    _touching = sensing.touching
-    # decide: the jump press, the grip, the state machine
-    _decide = states.decide
-    _update_state = states.update_state
-    _steady = states.steady
-    _is_still = states.is_still
-    _lose_balance = states.lose_balance
-    _update_grip = grab.update_grip
-    _climb = grab.climb
-    _release = grab.release
-    # act: gravity switches and the force laws
-    _act = laws.act
-    _gravity_actions = switches.gravity_actions
-    _hover = laws.hover
-    _height = laws.height
-    _drive = laws.drive
-    _steer = laws.steer
-    _balance = laws.balance
-    _jump = laws.jump
-    _push = laws.push
+        intent = self.intent
+        config = self.config
+        before = self.control_state
+        last = self.last_forces
+        sensed = self.senses.sense(
+            world, self.sensed, before, intent, last.push, last.balance_short, config
+        )
+        state = decide(sensed, before, intent, config)
+        if before.grip is not None or state.grip is not None:
+            hold(world, before.grip, state.grip, intent, config, sensed.dt)
+        forces = act(sensed, state, intent, config, self.laws)
+        if intent.restore_gravity or intent.gravity is not None or intent.nullify is not None:
+            switches.switch(world, self.name, intent, before.gravity_wish, before.nullify_wish)
+        exert(world, self.body, forces)
+        self.sensed = sensed
+        self.control_state = state
+        self.last_forces = forces
+        changed = state.state is not before.state
+        self.transition = Transition(sensed.time, before.state, state.state) if changed else None

@@ -1,80 +1,94 @@
-"""Grab, hang and climb: the hands hold a body through a pivot joint within a grip budget, let go
-when it slips or the grab is released, and slide the hold along the held surface to climb.
+"""Grab, hang and climb: the hands hold a body through a pivot joint within a grip budget
+(:class:`Grip`), let go when it slips or the grab is released, and slide the hold along the
+held surface to climb.
 
-The functions here are the :class:`~playground.controller.controller.Controller`'s methods (it
-binds them by name).
+Sensing finds the hold (:func:`handhold`) and how far it slipped (:func:`slip`); the state
+machine takes or drops it; :func:`hold` puts the change into the world (lengths in m).
 """
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from dataclasses import dataclass
 
 import pymunk
 
-from playground.controller.states import HANGING, OFF_BALANCE
+from playground.controller.config import ControllerConfig
 from playground.intents import Intent
 from playground.world.world import World
 
-if TYPE_CHECKING:
-    from playground.controller.controller import Controller
-
-__all__ = ["climb", "release", "update_grip"]
+__all__ = ["Grip", "handhold", "hold", "slip"]
 
 
-def update_grip(self: Controller, world: World, it: Intent) -> None:
-    """Keep, slide or let go of the grip held; or, with the grab held and none yet, grab the
-    nearest shape within reach of the head (a pivot joint with ``grip_force`` as its budget)."""
-    cfg = self.config
-    joint = self.joint
-    if joint is not None:
-        a = self.body.local_to_world(joint.anchor_a)
-        held = joint.b
-        b = held.local_to_world(joint.anchor_b)
-        if not it.grab or math.hypot(a.x - b.x, a.y - b.y) > cfg.grip_slip:
-            self._release(world)
-        elif it.climb != 0.0:
-            self._climb(world, joint, it.climb)
-        return
-    if not it.grab or self.state is OFF_BALANCE:
-        return
-    ax, ay = self.axis
-    p = self.body.position
-    half = cfg.half_length
+@dataclass(frozen=True, slots=True)
+class Grip:
+    """A hold: the pivot joint from our body to the held body, and the shape held (the climb
+    slides along it). The joint's ``max_force`` is the grip budget, N."""
+
+    joint: pymunk.PivotJoint
+    shape: pymunk.Shape
+
+
+def handhold(
+    space: pymunk.Space,
+    body: pymunk.Body,
+    shape_filter: pymunk.ShapeFilter,
+    config: ControllerConfig,
+) -> Grip | None:
+    """The grip the hands could take now: the nearest shape (not a sensor) within reach of the
+    head, held where the hand touches it by a joint not yet in the world; None if none."""
+    r = body.rotation_vector
+    ax, ay = -r.y, r.x
+    p = body.position
+    half = config.half_length
     head = (p.x + ax * half, p.y + ay * half)
-    info = world.space.point_query_nearest(head, cfg.radius + cfg.grab_reach, self._filter)
+    info = space.point_query_nearest(head, config.radius + config.grab_reach, shape_filter)
     if info is None or info.shape is None or info.shape.sensor or info.shape.body is None:
-        return
+        return None
     other = info.shape.body
     touch = info.point
-    joint = pymunk.PivotJoint(
-        self.body, other, self.body.world_to_local(touch), other.world_to_local(touch)
-    )
-    joint.max_force = cfg.grip_force
+    joint = pymunk.PivotJoint(body, other, body.world_to_local(touch), other.world_to_local(touch))
+    joint.max_force = config.grip_force
     joint.collide_bodies = False
-    world.add_constraint(joint)
-    self.joint = joint
-    self._held_shape = info.shape
-    self.state = HANGING
+    return Grip(joint, info.shape)
 
 
-def climb(self: Controller, world: World, joint: pymunk.PivotJoint, climb: float) -> None:
-    """Slide the held anchor along the held shape's surface."""
+def slip(grip: Grip) -> float:
+    """How far the grip's two anchors have drifted apart, m."""
+    joint = grip.joint
+    a = joint.a.local_to_world(joint.anchor_a)
+    b = joint.b.local_to_world(joint.anchor_b)
+    return math.hypot(a.x - b.x, a.y - b.y)
+
+
+def hold(
+    world: World,
+    before: Grip | None,
+    after: Grip | None,
+    intent: Intent,
+    config: ControllerConfig,
+    dt: float,
+) -> None:
+    """Put the state machine's grip into the world: let go of ``before`` if it is not kept, add
+    ``after``'s joint if it is new, and slide a kept hold along the held surface at the
+    intent's climb × ``climb_speed`` over the step (``dt``, s)."""
+    if before is not None and before is not after:
+        world.remove(before.joint)
+    if after is None:
+        return
+    if after is not before:
+        world.add_constraint(after.joint)
+    elif intent.climb != 0.0:
+        climb(after, intent.climb * config.climb_speed * dt)
+
+
+def climb(grip: Grip, distance: float) -> None:
+    """Slide the held anchor ``distance`` (m) along the held shape's surface."""
+    joint = grip.joint
     held = joint.b
-    shape = self._held_shape
-    assert shape is not None
     p = held.local_to_world(joint.anchor_b)
-    q = shape.point_query(p)
+    q = grip.shape.point_query(p)
     nx, ny = q.gradient
-    step = climb * self.config.climb_speed * world.config.dt
-    moved = (p.x + ny * step, p.y - nx * step)
-    on_surface = shape.point_query(moved).point
+    moved = (p.x + ny * distance, p.y - nx * distance)
+    on_surface = grip.shape.point_query(moved).point
     joint.anchor_b = held.world_to_local(on_surface)
-
-
-def release(self: Controller, world: World) -> None:
-    """Let go: the grip joint leaves the world."""
-    if self.joint is not None:
-        world.remove(self.joint)
-        self.joint = None
-        self._held_shape = None

@@ -1,47 +1,59 @@
-"""Sensing, the first part of a controller's step: the body's state, the gravity at it, its up,
-the ground under it (:class:`GroundHit`, from a swept probe) and the load pressing on it.
+"""Sensing, the first phase of a controller's step: its body, the gravity at it, its up, the
+ground under it (:class:`GroundHit`, from a swept probe), the load pressing on it and what its
+hands could reach, returned as one :class:`Sensed` value by :meth:`Senses.sense`.
 
-The functions here are the :class:`~playground.controller.controller.Controller`'s methods (it
-binds them by name); they read the world and write only the controller's own sensed state.
+:class:`Senses` holds the sense organs (the probe's sweep, the arms' reach, the body's
+contacts); it reads the world and writes nothing into it.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import pymunk
 
-from playground._engine import raw
+from playground._engine.contacts import Contacts
+from playground._engine.reach import Reach
+from playground._engine.state import (
+    BodyState,
+    body_motion,
+    body_state,
+    centre_of_gravity,
+    space_gravity,
+)
+from playground._engine.sweep import Sweep
+from playground.controller import grab
 from playground.controller._vec import ZERO, unit_or
-from playground.controller.states import CRUSHED, GROUNDED, HANGING
+from playground.controller.config import ControllerConfig
+from playground.controller.grab import Grip
+from playground.controller.states import (
+    CRUSHED,
+    GETTING_UP,
+    GROUNDED,
+    HANGING,
+    OFF_BALANCE,
+    ControllerState,
+)
+from playground.intents import Intent
 from playground.vec import Vec
 from playground.world.world import World
-
-if TYPE_CHECKING:
-    from playground.controller.controller import Controller
 
 # Body types read once (``pymunk.Body.X`` is two attribute lookups, three times a step).
 KINEMATIC = pymunk.Body.KINEMATIC
 DYNAMIC = pymunk.Body.DYNAMIC
 
-__all__ = [
-    "GroundHit",
-    "contact_load",
-    "gravity",
-    "ground_acceleration",
-    "probe",
-    "sense",
-    "touching",
-]
+__all__ = ["GroundHit", "PushTarget", "Sensed", "Senses", "height", "up_speed"]
+
+GroundMotion = tuple[pymunk.Body, float, float, float]
+"""A kinematic ground as the probe read it: the body, its velocity (m/s) and spin (rad/s)."""
 
 
 @dataclass(slots=True)
 class GroundHit:
     """What the ground probe found (plain values except the hit body). Read-only by convention,
-    not frozen: a frozen dataclass sets each field through ``object.__setattr__``, which made
-    building one ~5× dearer (~0.7 µs), and the probe builds one every step (a changed copy is
+    not frozen: a frozen dataclass sets each field through ``object.__setattr__``, which makes
+    building one several times dearer, and the probe builds one every step (a changed copy is
     made with ``dataclasses.replace``).
 
     Attributes:
@@ -59,13 +71,15 @@ class GroundHit:
             speed is ω·R, the centre's ω·(R − ride height)).
         frame_acceleration: how much ``frame_velocity`` changes per second, m/s²: as the ground
             turns by ω·dt (the centripetal −ω²·d to first order), plus, on a kinematic ground,
-            its own acceleration A + α × d read from how its velocity and spin changed since the
-            last step (a mover sets them a step ahead, so this is the acceleration the coming
-            step needs). A dynamic ground's change of velocity is partly our own reaction on it:
-            feeding that back would push a light crate harder the more it yields, so its
-            acceleration is left to the drive's feedback. Gravity minus ``frame_acceleration``
+            its own acceleration (``own_acceleration``). Gravity minus ``frame_acceleration``
             is the gravity *felt* in the ground's frame: inside a spinning ring, ω²·r outward;
             in a lift accelerating up at a, g + a.
+        own_acceleration: the part of ``frame_acceleration`` that is the ground's own, A + α × d,
+            m/s², read from how a kinematic ground's velocity and spin changed since the last
+            step (a mover sets them a step ahead, so this is the acceleration the coming step
+            needs); zero on a dynamic ground, whose change of velocity is partly our own
+            reaction on it (feeding that back would push a light crate harder the more it
+            yields), and on the first step over a new ground.
         spin: the body hit's angular velocity, rad/s (counter-clockwise): the balance damps
             our spin relative to it.
         dynamic: the body hit is dynamic, so it takes our reactions (the world drops forces on
@@ -79,158 +93,286 @@ class GroundHit:
     walkable: bool
     frame_velocity: Vec
     frame_acceleration: Vec
+    own_acceleration: Vec
     spin: float
     dynamic: bool
 
 
-def sense(self: Controller, world: World) -> Vec:
-    """Read the body (position, velocity, mass), the world's settings, the gravity at it, up, the
-    ground under it (:attr:`~Controller.probe`) and the load on it; return the gravity, m/s².
+@dataclass(slots=True)
+class PushTarget:
+    """The nearest dynamic body within the arms' reach: the body, the nearest point of it, m,
+    and where the arms reach from (the head or the chest), m. Read-only by convention (one is
+    built every step while pushing)."""
 
-    Up is the perceived one while supported and the field while airborne (it sees where it will
-    land), fallen or getting up (contacts while lying and rising shake the inner ear).
+    body: pymunk.Body
+    point: Vec
+    origin: Vec
+
+
+@dataclass(slots=True)
+class Sensed:
+    """What a controller sensed at the start of a step (read-only by convention, not frozen:
+    one is built every step). Forces in N, impulses in N·s, lengths in m, times in s.
+
+    Attributes:
+        body: its own body's state.
+        up: its up (unit): the perceived one while supported, the field's otherwise.
+        time: the world's time.
+        dt: the step's length, split into ``substeps`` engine steps.
+        substeps: engine steps per step.
+        gravity: the gravity at the body, m/s².
+        perceived_up: the perceived up, read while supported or getting up (None otherwise).
+        ground: the ground under it (None: the probe found nothing).
+        ground_motion: the kinematic ground under it and its velocity and spin (None: none),
+            which the next step's probe differentiates.
+        contact_load: force pressing on it along −up through contacts in the last step.
+        load: the load borne from above: ``contact_load`` and the last push's reaction.
+        touching: any contact touches the body.
+        balance_short: the last step's balance needed more than its budget while touching
+            (None: no balance acted).
+        grip_impulse: the held joint's impulse in the last substep (0 when not holding).
+        slip: how far the held grip's anchors drifted apart (0 when not holding or not
+            grabbing).
+        handhold: the grip the hands could take (only looked for while grabbing, empty-handed
+            and not off balance).
+        engine: the engine force on the body in the last step, as the world's solver read it
+            (read only while holding or taking a hold; zero otherwise).
+        push_target: what the arms could push (only looked for while pushing).
     """
-    h = self._h
-    self._px, self._py = raw.position(h)
-    self._vx, self._vy = raw.velocity(h)
-    self._m = raw.mass(h)
-    self._world_config = world.config
-    gx, gy = self._gravity(world)
 
-    supported = self.state in (GROUNDED, HANGING, CRUSHED)
-    if supported:
-        (ux, uy), perceived = world.perceived_up_and_gravity(self.name)
-        if not (math.isfinite(ux) and math.isfinite(uy)):
-            ux, uy = unit_or(-gx, -gy, self.up)
-        elif math.hypot(*perceived) < self._up_threshold:
-            # Just caught after a free fall: the inner ear still holds the up from before the
-            # fall (after a gravity flip, the opposite one) until the new support has built
-            # up a reading: keep the up we fell with meanwhile.
-            ux, uy = self.up
-    else:
-        ux, uy = unit_or(-gx, -gy, self.up)
-    self.up = (ux, uy)
-
-    self.probe = self._probe(world, ux, uy)
-    self.contact_load = self._contact_load(world, ux, uy)
-    pushed = self.last_forces.push
-    self.load = self.contact_load + max(0.0, -(pushed[0] * ux + pushed[1] * uy))
-    return (gx, gy)
+    body: BodyState
+    up: Vec
+    time: float = 0.0
+    dt: float = 0.0
+    substeps: int = 1
+    gravity: Vec = ZERO
+    perceived_up: Vec | None = None
+    ground: GroundHit | None = None
+    ground_motion: GroundMotion | None = None
+    contact_load: float = 0.0
+    load: float = 0.0
+    touching: bool = False
+    balance_short: bool | None = None
+    grip_impulse: float = 0.0
+    slip: float = 0.0
+    handhold: Grip | None = None
+    engine: Vec = ZERO
+    push_target: PushTarget | None = None
 
 
-def gravity(self: Controller, world: World) -> Vec:
-    """The gravity at the body, m/s²: ``world.gravity_at`` in general, and for a field uniform
-    in space the value the GRAVITY stage has just put in ``space.gravity`` with the body's rule
-    applied in plain floats (the numpy path costs ~0.2 ms a call for one body). Whether the
-    field is uniform and the body's rule are read again only when the world says they changed
-    (:attr:`World.gravity_version`)."""
-    version = world.gravity_version
-    if version != self._gravity_version:
-        self._gravity_version = version
-        self._uniform_field = world.gravity.uniform
-        self._gravity_rule = world.gravity_rule(self.name)
-    if not self._uniform_field:
-        return world.gravity_at(self.name)
-    gx, gy = raw.gravity(self._space_h)
-    rule = self._gravity_rule
-    if rule.direction is None:
-        return (rule.scale * gx, rule.scale * gy)
-    mag = rule.scale * math.hypot(gx, gy)
-    return (mag * rule.direction[0], mag * rule.direction[1])
+def up_speed(sensed: Sensed, ground: GroundHit | None) -> float:
+    """The body's speed along up relative to the ground's frame at its centre, m/s."""
+    gvx, gvy = ground.frame_velocity if ground is not None else ZERO
+    ux, uy = sensed.up
+    body = sensed.body
+    return (body.vx - gvx) * ux + (body.vy - gvy) * uy
 
 
-def probe(self: Controller, world: World, ux: float, uy: float) -> GroundHit | None:
-    """Sweep a circle from the centre along −up; the nearest other shape is the ground."""
-    cfg = self.config
-    px, py = self._px, self._py
-    length = cfg.probe_length
-    # The nearest of every hit (playground._engine.sweep says why not pymunk's segment_query_first).
-    found = self._sweep.nearest(px, py, px - ux * length, py - uy * length, cfg.probe_radius)
-    ground = found[0].body if found is not None else None
-    if found is None or ground is None:
-        self._ground_motion = None
-        return None
-    _, hx, hy, nx, ny = found
-    # The ground's frame at our centre, as pymunk's step needs it: positions move with the
-    # velocity before the step, so standing still on a ground turning by θ = ω·dt this step
-    # takes the velocity that carries our centre to where the ground carries that point,
-    # V + (R(θ) − 1)·d/dt (d from the ground's centre of gravity), not the tangent ω × d,
-    # which leads the turning ground by θ/2 each step; this velocity turns by θ each step,
-    # hence the acceleration (R(θ) − 1)·(its turning part)/dt.
-    dt = self._world_config.dt
-    # The ground's type, velocity and spin, read once here for the frame, its own acceleration
-    # and the balance.
-    gh = raw.handle(ground)
-    kind = raw.body_type(gh)
-    w = raw.angular_velocity(gh)
-    turn = w * dt
-    if turn == 0.0 and kind != KINEMATIC:
-        # Not turning: the chord below is exactly 0.0 for any d (cos 0 = 1, sin 0 = ±0), and
-        # only a kinematic ground's own acceleration needs d: skip reading its centre (~1 µs).
-        cos_t, sin_t = 1.0, 0.0
-        dx = dy = rx = ry = 0.0
-    else:
-        cos_t, sin_t = math.cos(turn), math.sin(turn)
-        cx, cy = raw.centre_of_gravity(gh)
-        dx, dy = px - cx, py - cy
-        rx = (cos_t * dx - sin_t * dy - dx) / dt
-        ry = (sin_t * dx + cos_t * dy - dy) / dt
-    vx, vy = raw.velocity(gh)
-    own_x, own_y = self._ground_acceleration(ground, kind == KINEMATIC, vx, vy, w, dx, dy, dt)
-    return GroundHit(
-        body=ground,
-        point=(hx, hy),
-        normal=(nx, ny),
-        distance=(px - hx) * ux + (py - hy) * uy,
-        walkable=nx * ux + ny * uy >= self._cos_slope,
-        frame_velocity=(vx + rx, vy + ry),
-        frame_acceleration=(
-            (cos_t * rx - sin_t * ry - rx) / dt + own_x,
-            (sin_t * rx + cos_t * ry - ry) / dt + own_y,
-        ),
-        spin=w,
-        dynamic=kind == DYNAMIC,
+def height(sensed: Sensed, hit: GroundHit) -> float:
+    """Height of the centre over the hit point along the ground normal, m."""
+    body = sensed.body
+    return (body.x - hit.point[0]) * hit.normal[0] + (body.y - hit.point[1]) * hit.normal[1]
+
+
+# The states in which the controller is supported: its up is the perceived one.
+SUPPORTED = (GROUNDED, HANGING, CRUSHED)
+
+
+class Senses:
+    """A controller's sense organs: the ground probe, the arms' reach, the body's contacts, and
+    the gravity rule it last read."""
+
+    __slots__ = (
+        "_body",
+        "_contacts",
+        "_filter",
+        "_gravity_rule",
+        "_gravity_version",
+        "_name",
+        "_reach",
+        "_space",
+        "_sweep",
+        "_uniform_field",
     )
 
+    def __init__(
+        self, world: World, name: str, body: pymunk.Body, shape_filter: pymunk.ShapeFilter
+    ) -> None:
+        self._name = name
+        self._body = body
+        self._filter = shape_filter
+        self._space = world.space
+        self._sweep = Sweep(world.space, shape_filter)
+        self._reach = Reach(world.space, shape_filter)
+        self._contacts = Contacts(body)
+        # The field's uniformity and our gravity rule as of World.gravity_version: they change
+        # only through the world's setters, and gravity() reads them again when it has moved.
+        self._gravity_version = -1
+        self._uniform_field = True
+        self._gravity_rule = world.gravity_rule(name)
 
-def ground_acceleration(
-    self: Controller,
-    ground: pymunk.Body,
-    kinematic: bool,
-    vx: float,
-    vy: float,
-    w: float,
-    dx: float,
-    dy: float,
-    dt: float,
-) -> Vec:
-    """The ground's own acceleration at our centre, A + α × d (m/s², d from its centre of
-    gravity, m), from how its velocity (vx, vy), m/s, and spin w, rad/s, as the probe has just
-    read them, changed since the last step (dt, s).
+    def sense(
+        self,
+        world: World,
+        before: Sensed,
+        state: ControllerState,
+        intent: Intent,
+        last_push: Vec,
+        last_balance_short: bool | None,
+        config: ControllerConfig,
+    ) -> Sensed:
+        """Read the body, the world's settings, the gravity at it, up, the ground under it, the
+        load on it and what the hands reach, given the last step's reading (``before``), the
+        state, the intent and the last step's push (N, on us) and balance verdict.
 
-    Fed forward, it lets the drive and the hover keep up with an accelerating platform
-    instead of lagging a·drive_time behind it (5 cm over a second at 1 m/s²). Only for a
-    kinematic ground (zero otherwise, and on the first step over a new ground): a dynamic
-    ground's change of velocity is partly our own reaction on it.
-    """
-    if not kinematic:
-        self._ground_motion = None
-        return ZERO
-    prev = self._ground_motion
-    self._ground_motion = (ground, vx, vy, w)
-    if prev is None or prev[0] is not ground:
-        return ZERO
-    alpha = (w - prev[3]) / dt
-    return ((vx - prev[1]) / dt - alpha * dy, (vy - prev[2]) / dt + alpha * dx)
+        Up is the perceived one while supported and the field while airborne (it sees where it
+        will land), fallen or getting up (contacts while lying and rising shake the inner ear).
+        """
+        name = self._name
+        body = body_state(self._body)
+        wc = world.config
+        gx, gy = self.gravity(world)
+        s = state.state
+        perceived_up: Vec | None = None
+        if s in SUPPORTED:
+            (ux, uy), perceived = world.perceived_up_and_gravity(name)
+            perceived_up = (ux, uy)
+            if not (math.isfinite(ux) and math.isfinite(uy)):
+                ux, uy = unit_or(-gx, -gy, before.up)
+            elif math.hypot(*perceived) < wc.perception.up_threshold:
+                # Just caught after a free fall: the inner ear still holds the up from before
+                # the fall (after a gravity flip, the opposite one) until the new support has
+                # built up a reading: keep the up we fell with meanwhile.
+                ux, uy = before.up
+        else:
+            ux, uy = unit_or(-gx, -gy, before.up)
+            if s is GETTING_UP:
+                perceived_up = world.perceived_up(name)
 
+        ground, motion = self.probe(body, ux, uy, wc.dt, before.ground_motion, config)
+        # Each contact's impulse over the last substep's length.
+        contact_load, touching = self._contacts.load_and_touching(ux, uy, wc.dt / wc.substeps)
+        load = contact_load + max(0.0, -(last_push[0] * ux + last_push[1] * uy))
 
-def contact_load(self: Controller, world: World, ux: float, uy: float) -> float:
-    """Force pressing on us along −up through contacts in the last step, N (the floor's push
-    along +up does not count): each contact's impulse over the last substep's length."""
-    wc = self._world_config
-    return self._contacts.load(ux, uy, wc.dt / wc.substeps)
+        grip = state.grip
+        handhold = None
+        if grip is None and intent.grab and s is not OFF_BALANCE:
+            handhold = grab.handhold(self._space, self._body, self._filter, config)
+        holding = grip is not None or handhold is not None
+        grip_impulse = float(grip.joint.impulse) if grip is not None else 0.0
+        slip = grab.slip(grip) if grip is not None and intent.grab else 0.0
+        engine = world.forces(name).engine if holding else ZERO
+        push_target = self.push_target(body, ground, config) if intent.push else None
+        # In the order of the fields, positionally: building one with keywords costs twice as
+        # much, and one is built every step.
+        return Sensed(
+            body, (ux, uy), world.time, wc.dt, wc.substeps, (gx, gy), perceived_up, ground,
+            motion, contact_load, load, touching, last_balance_short, grip_impulse, slip,
+            handhold, engine, push_target,
+        )  # fmt: skip
 
+    def gravity(self, world: World) -> Vec:
+        """The gravity at the body, m/s²: ``world.gravity_at`` in general, and for a field
+        uniform in space the value the GRAVITY stage has just put in ``space.gravity`` with the
+        body's rule applied in plain floats (the numpy path costs far more for one body).
+        Whether the field is uniform and the body's rule are read again only when the world
+        says they changed (:attr:`World.gravity_version`)."""
+        version = world.gravity_version
+        if version != self._gravity_version:
+            self._gravity_version = version
+            self._uniform_field = world.gravity.uniform
+            self._gravity_rule = world.gravity_rule(self._name)
+        if not self._uniform_field:
+            return world.gravity_at(self._name)
+        gx, gy = space_gravity(self._space)
+        rule = self._gravity_rule
+        if rule.direction is None:
+            return (rule.scale * gx, rule.scale * gy)
+        mag = rule.scale * math.hypot(gx, gy)
+        return (mag * rule.direction[0], mag * rule.direction[1])
 
-def touching(self: Controller) -> bool:
-    """Whether any contact touches the body now."""
-    return self._contacts.touching()
+    def probe(
+        self,
+        body: BodyState,
+        ux: float,
+        uy: float,
+        dt: float,
+        last_motion: GroundMotion | None,
+        config: ControllerConfig,
+    ) -> tuple[GroundHit | None, GroundMotion | None]:
+        """Sweep a circle from the centre along −up; the nearest other shape is the ground.
+        Returns it and, if kinematic, its motion for the next step's probe (``last_motion``:
+        the last step's; dt the step, s)."""
+        px, py = body.x, body.y
+        length = config.probe_length
+        # The nearest of every hit (playground._engine.sweep says why not pymunk's
+        # segment_query_first).
+        found = self._sweep.nearest(px, py, px - ux * length, py - uy * length, config.probe_radius)
+        ground = found[0].body if found is not None else None
+        if found is None or ground is None:
+            return None, None
+        _, hx, hy, nx, ny = found
+        # The ground's frame at our centre, as pymunk's step needs it: positions move with the
+        # velocity before the step, so standing still on a ground turning by θ = ω·dt this
+        # step takes the velocity that carries our centre to where the ground carries that
+        # point, V + (R(θ) − 1)·d/dt (d from the ground's centre of gravity), not the tangent
+        # ω × d, which leads the turning ground by θ/2 each step; this velocity turns by θ each
+        # step, hence the acceleration (R(θ) − 1)·(its turning part)/dt.
+        kind, vx, vy, w = body_motion(ground)
+        turn = w * dt
+        if turn == 0.0 and kind != KINEMATIC:
+            # Not turning: the chord below is exactly 0.0 for any d (cos 0 = 1, sin 0 = ±0), and
+            # only a kinematic ground's own acceleration needs d: skip reading its centre.
+            cos_t, sin_t = 1.0, 0.0
+            dx = dy = rx = ry = 0.0
+        else:
+            cos_t, sin_t = math.cos(turn), math.sin(turn)
+            cx, cy = centre_of_gravity(ground)
+            dx, dy = px - cx, py - cy
+            rx = (cos_t * dx - sin_t * dy - dx) / dt
+            ry = (sin_t * dx + cos_t * dy - dy) / dt
+        motion: GroundMotion | None = None
+        own_x = own_y = 0.0
+        if kind == KINEMATIC:
+            # Fed forward, the ground's own acceleration lets the drive and the hover keep up
+            # with an accelerating platform instead of lagging a·drive_time behind it.
+            motion = (ground, vx, vy, w)
+            if last_motion is not None and last_motion[0] is ground:
+                alpha = (w - last_motion[3]) / dt
+                own_x = (vx - last_motion[1]) / dt - alpha * dy
+                own_y = (vy - last_motion[2]) / dt + alpha * dx
+        distance = (px - hx) * ux + (py - hy) * uy
+        walkable = nx * ux + ny * uy >= math.cos(config.max_slope)
+        frame_velocity = (vx + rx, vy + ry)
+        frame_acceleration = (
+            (cos_t * rx - sin_t * ry - rx) / dt + own_x,
+            (sin_t * rx + cos_t * ry - ry) / dt + own_y,
+        )
+        # Positionally, in the order of the fields (as Sensed, for speed).
+        hit = GroundHit(
+            ground, (hx, hy), (nx, ny), distance, walkable, frame_velocity, frame_acceleration,
+            (own_x, own_y), w, kind == DYNAMIC,
+        )  # fmt: skip
+        return hit, motion
+
+    def push_target(
+        self, body: BodyState, ground: GroundHit | None, config: ControllerConfig
+    ) -> PushTarget | None:
+        """The nearest dynamic body within reach of the head or the chest (not the ground)."""
+        px, py = body.x, body.y
+        ax, ay = -body.sin, body.cos
+        half = config.half_length
+        reach = config.radius + config.push_reach
+        ground_body = ground.body if ground is not None else None
+        qx, qy = px + ax * half, py + ay * half
+        found = self._reach.nearest(qx, qy, reach, ground_body)
+        # The head is asked first: the chest's find wins only if strictly nearer.
+        chest = self._reach.nearest(
+            px, py, reach, ground_body, math.inf if found is None else found[3]
+        )
+        if chest is not None:
+            found, qx, qy = chest, px, py
+        target = None if found is None else found[0].body
+        if found is None or target is None:
+            return None
+        return PushTarget(target, (found[1], found[2]), (qx, qy))

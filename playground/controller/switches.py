@@ -1,42 +1,43 @@
 """Gravity switches: an intent turns the controller's own gravity to a direction, restores it,
 or nullifies another body's, each acting once per new intent value from the next step on.
 
-:func:`gravity_actions` is the :class:`~playground.controller.controller.Controller`'s method
-``_gravity_actions`` (it binds it by name).
+:func:`switch` compares the intent with the values it asked for last step (kept in the
+controller's :class:`~playground.controller.states.ControllerState`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING
 
 from playground.gravity import GravityRule
 from playground.intents import Intent
+from playground.vec import Vec
 from playground.world.world import World
 
-if TYPE_CHECKING:
-    from playground.controller.controller import Controller
-
-__all__ = ["gravity_actions", "next_step"]
+__all__ = ["next_step", "switch"]
 
 
-def gravity_actions(self: Controller, world: World, it: Intent) -> None:
-    """Gravity switches act on a new intent value (a held intent acts once), from the next
-    step on: this step's gravity was applied before the controllers run, and every controller
-    (the nullified one included, whether it runs before or after us) must read the gravity
-    that acts in its step."""
-    name = self.name
-    if it.restore_gravity:
+def switch(
+    world: World,
+    name: str,
+    intent: Intent,
+    gravity_wish: Vec | None,
+    nullify_wish: str | None,
+) -> None:
+    """Act on the gravity switches of ``intent`` for the body ``name``: a new value (a held
+    intent acts once; ``gravity_wish`` and ``nullify_wish`` are last step's values) changes a
+    rule from the next step on. This step's gravity was applied before the controllers run,
+    and every controller (the nullified one included, whether it runs before or after us)
+    must read the gravity that acts in its step."""
+    if intent.restore_gravity:
         if not world.gravity_rule(name).is_default:
             next_step(world, lambda w: w.set_gravity_rule(name, None))
-    elif it.gravity is not None and it.gravity != self._gravity_wish:
-        rule = GravityRule(direction=it.gravity)
+    elif intent.gravity is not None and intent.gravity != gravity_wish:
+        rule = GravityRule(direction=intent.gravity)
         next_step(world, lambda w: w.set_gravity_rule(name, rule))
-    self._gravity_wish = it.gravity
-    target = it.nullify
-    if target is not None and target != self._nullify_wish:
+    target = intent.nullify
+    if target is not None and target != nullify_wish:
         next_step(world, lambda w: w.set_gravity_rule(target, GravityRule(scale=0.0)))
-    self._nullify_wish = it.nullify
 
 
 def next_step(world: World, change: Callable[[World], None]) -> None:

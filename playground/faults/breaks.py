@@ -14,17 +14,20 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from playground import movers as movers_mod
+from playground.controller import switches
 from playground.controller.controller import Controller
+from playground.controller.laws import Laws, Reacting
 from playground.faults.catalog import register
 from playground.faults.patching import (
     after,
+    argument_changed,
     controller_config,
+    controller_laws,
     parameter,
     replaced,
     rotate,
     with_argument,
 )
-from playground.forces.ledger import Category
 from playground.gravity import GravityRule
 from playground.gravity import perception as perception_mod
 from playground.vec import Vec
@@ -56,18 +59,16 @@ BYPASS_CUTOFF = 1e9
 def _hover_reaction() -> Iterator[None]:
     """The hover's reaction on the ground is cut to 5 % (Newton's third law broken): a plank,
     a crate or a raft no longer feels the player standing on it."""
-    keep = HOVER_REACTION_SCALE
 
-    def then(a: dict[str, Any], force: float) -> float:
-        hit = a["hit"]
-        nx, ny = hit.normal
-        back = (1.0 - keep) * force
-        a["world"].apply_force(
-            hit.body, (back * nx, back * ny), point=hit.point, category=Category.SUPPORT
-        )
-        return force
+    def make(original: Callable[[Reacting, Vec], Vec]) -> Callable[[Reacting, Vec], Vec]:
+        def reaction(law: Reacting, force: Vec) -> Vec:
+            rx, ry = original(law, force)
+            keep = HOVER_REACTION_SCALE if law == "hover" else 1.0
+            return (keep * rx, keep * ry)
 
-    with after(Controller, "_hover", ("world", "hit"), then):
+        return reaction
+
+    with controller_laws(reaction=make):
         yield
 
 
@@ -75,7 +76,7 @@ def _hover_reaction() -> Iterator[None]:
 def _hover_removed() -> Iterator[None]:
     """No hover spring at all: the capsule stands on its own end cap, and with no hover force
     the drive has no traction."""
-    with replaced(Controller, "_hover", lambda _: lambda *a, **k: 0.0):
+    with controller_laws(hover=lambda _: lambda *a, **k: 0.0):
         yield
 
 
@@ -89,24 +90,25 @@ def _hover_reading() -> Iterator[None]:
         k = HOVER_READING_SCALE
         me.last_forces = dataclasses.replace(me.last_forces, hover=(k * hx, k * hy))
 
-    with after(Controller, "_control", ("self",), then):
+    with after(Controller, "step", ("self",), then):
         yield
+
+
+def _still(hit: Any) -> Any:
+    """The ground ``hit`` as if it stood still in the world."""
+    motion = {
+        f.name: (0.0, 0.0)
+        for f in dataclasses.fields(hit)
+        if f.name.endswith(("velocity", "acceleration"))
+    }
+    return dataclasses.replace(hit, **motion)
 
 
 @register("drive_world_frame")
 def _drive_world_frame() -> Iterator[None]:
     """The drive works relative to the world instead of the ground under the feet: standing still
     means standing still in the world, so a platform slides away under the player."""
-
-    def still(hit: Any) -> Any:
-        motion = {
-            f.name: (0.0, 0.0)
-            for f in dataclasses.fields(hit)
-            if f.name.endswith(("velocity", "acceleration"))
-        }
-        return dataclasses.replace(hit, **motion)
-
-    with with_argument(Controller, "_drive", "hit", still):
+    with controller_laws(drive=argument_changed(Laws, "hit", _still)):
         yield
 
 
@@ -117,12 +119,21 @@ def _drive_slowed() -> Iterator[None]:
         yield
 
 
+def _without_own_acceleration(hit: Any) -> Any:
+    """The ground ``hit`` with its own acceleration left out of its frame's."""
+    (fx, fy), (ox, oy) = hit.frame_acceleration, hit.own_acceleration
+    return dataclasses.replace(
+        hit, frame_acceleration=(fx - ox, fy - oy), own_acceleration=(0.0, 0.0)
+    )
+
+
 @register("ground_acceleration_ignored")
 def _ground_acceleration_ignored() -> Iterator[None]:
     """The drive and the hover no longer feed the ground's own acceleration forward: on an
     accelerating platform the player lags behind it by its acceleration × the drive's time
     constant."""
-    with replaced(Controller, "_ground_acceleration", lambda _: lambda *a, **k: (0.0, 0.0)):
+    without = argument_changed(Laws, "hit", _without_own_acceleration)
+    with controller_laws(hover=without, drive=without):
         yield
 
 
@@ -130,14 +141,14 @@ def _ground_acceleration_ignored() -> Iterator[None]:
 def _traction_unbounded() -> Iterator[None]:
     """The drive is no longer bounded by traction × hover force (only by its budget): a body
     with no weight on its feet still pushes itself along the ground."""
-    with with_argument(Controller, "_drive", "hover", lambda _: TRACTION_FREE_HOVER):
+    with controller_laws(drive=argument_changed(Laws, "hover", lambda _: TRACTION_FREE_HOVER)):
         yield
 
 
 @register("balance_off")
 def _balance_off() -> Iterator[None]:
     """No balance torque: the capsule no longer keeps itself upright."""
-    with replaced(Controller, "_balance", lambda _: lambda *a, **k: 0.0):
+    with controller_laws(balance=lambda _: lambda *a, **k: 0.0):
         yield
 
 
@@ -145,12 +156,10 @@ def _balance_off() -> Iterator[None]:
 def _grip_reading() -> Iterator[None]:
     """The controller's own grip reading is halved (the joint itself is unchanged)."""
 
-    def make(original: property) -> property:
-        assert original.fget is not None
-        get = original.fget
-        return property(lambda self: GRIP_READING_SCALE * get(self))
+    def make(original: Callable[[float, float], float]) -> Callable[[float, float], float]:
+        return lambda impulse, substep: GRIP_READING_SCALE * original(impulse, substep)
 
-    with replaced(Controller, "grip", make):
+    with controller_laws(grip=make):
         yield
 
 
@@ -164,15 +173,12 @@ def _grip_weakened() -> Iterator[None]:
 
 @register("push_reaction_off")
 def _push_reaction_off() -> Iterator[None]:
-    """The push's reaction on the pusher is not applied (the pushed body still gets its push,
-    and the controller still reports it)."""
+    """The push's reaction on the pusher is lost (the pushed body still gets its push)."""
 
-    def then(a: dict[str, Any], force: tuple[float, float]) -> tuple[float, float]:
-        me = a["self"]
-        a["world"].apply_force(me.body, (-force[0], -force[1]), category=Category.SUPPORT)
-        return force
+    def make(original: Callable[[Reacting, Vec], Vec]) -> Callable[[Reacting, Vec], Vec]:
+        return lambda law, force: (0.0, 0.0) if law == "push" else original(law, force)
 
-    with after(Controller, "_push", ("self", "world"), then):
+    with controller_laws(reaction=make):
         yield
 
 
@@ -193,10 +199,7 @@ def _nullify_leaks() -> Iterator[None]:
 def _own_gravity_ignored() -> Iterator[None]:
     """The controller ignores its own-gravity switch (the intent's ``gravity``)."""
     with with_argument(
-        Controller,
-        "_gravity_actions",
-        "it",
-        lambda it: dataclasses.replace(it, gravity=None),
+        switches, "switch", "intent", lambda it: dataclasses.replace(it, gravity=None)
     ):
         yield
 

@@ -57,6 +57,9 @@ def test_the_contacts_answer_as_pymunk(seed: int, steps: int, angle: float, subs
         reader = Contacts(body)
         assert _bits(reader.load(ux, uy, h)) == _bits(load_by_pymunk(body, ux, uy, h))
         assert reader.touching() is touching_by_pymunk(body)
+        both = reader.load_and_touching(ux, uy, h)
+        assert _bits(both[0]) == _bits(load_by_pymunk(body, ux, uy, h))
+        assert both[1] is touching_by_pymunk(body)
 
 
 def test_a_pile_has_bodies_touching_and_pressed_from_above() -> None:

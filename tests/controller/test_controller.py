@@ -46,6 +46,6 @@ def test_a_removed_controller_takes_its_hooks_with_it() -> None:
     player = Controller(world, "player", (0.0, 1.0), source=Script(((0.0, Intent(move=1.0)),)))
     world.run(0.1)
     player.remove()
-    for stage, hook in ((Stage.INPUTS, player._read_source), (Stage.CONTROL, player._control)):
+    for stage, hook in ((Stage.INPUTS, player.read_source), (Stage.CONTROL, player.step)):
         with pytest.raises(ValueError, match="not registered"):
             world.off(stage, hook)

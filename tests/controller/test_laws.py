@@ -1,5 +1,6 @@
 """Laws of the controller's forces: hover, drive, air steering, jump and push, each within its
-budget, each with its reaction, and all following the body's mass now.
+budget, each with its reaction, and all following the body's mass now — in a world, and as
+functions of what was sensed (property tests of :mod:`playground.controller.laws`).
 
 Hovering bodies never touch the floor, so the solver's support force is exactly the controller's
 hover and drive: the laws below hold to float rounding once the spring has settled. Each action
@@ -14,6 +15,8 @@ import math
 
 import pymunk
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from playground import (
     Controller,
@@ -25,6 +28,11 @@ from playground import (
     State,
     World,
 )
+from playground._engine.state import BodyState
+from playground.controller import ControllerState, GroundHit, Sensed, laws
+from playground.controller._vec import ZERO
+from playground.controller.laws import Reacting
+from playground.controller.sensing import PushTarget
 from playground.level import find, load
 from playground.scene import build
 
@@ -444,3 +452,215 @@ def test_the_push_takes_the_heads_find_unless_the_chest_has_a_strictly_nearer_on
     assert player.pushed is not None
     (x, _), _ = player.pushed
     assert ("head" if x > 0.0 else "chest") == pushed
+
+
+# -- the laws as functions of what was sensed --------------------------------------------------
+
+CONFIG = ControllerConfig()
+RIDE = CONFIG.ride_height
+UPRIGHT_MOMENT = 20.0
+"""kg·m²: a moment for the balance's law (the law is linear in it)."""
+TOL_LAW_REL = 1e-12
+"""Relative rounding of a law's few float operations (a handful of ulps)."""
+
+_MASS = st.floats(min_value=20.0, max_value=200.0)
+_SPEED = st.floats(min_value=-10.0, max_value=10.0)
+_G = st.floats(min_value=0.5, max_value=15.0)
+_DT = st.sampled_from([1 / 60, 1 / 120, 1 / 240])
+_SUBSTEPS = st.sampled_from([1, 2, 4])
+_ANGLE = st.floats(min_value=-1.0, max_value=1.0)
+UNTIMED = settings(deadline=None)
+"""No per-example deadline: these check values, not speed."""
+
+
+def body_state(
+    *,
+    y: float = RIDE,
+    vx: float = 0.0,
+    vy: float = 0.0,
+    angle: float = 0.0,
+    spin: float = 0.0,
+    mass: float = M,
+) -> BodyState:
+    return BodyState(0.0, y, vx, vy, math.cos(angle), math.sin(angle), spin, mass, UPRIGHT_MOMENT)
+
+
+def ground(
+    *, velocity: tuple[float, float] = (0.0, 0.0), spin: float = 0.0, normal_angle: float = 0.0
+) -> GroundHit:
+    """Flat (or sloped by ``normal_angle``, rad) static ground at the origin, moving at
+    ``velocity`` (m/s)."""
+    normal = (-math.sin(normal_angle), math.cos(normal_angle))
+    return GroundHit(
+        body=pymunk.Body(body_type=pymunk.Body.STATIC),
+        point=(0.0, 0.0),
+        normal=normal,
+        distance=RIDE,
+        walkable=True,
+        frame_velocity=velocity,
+        frame_acceleration=(0.0, 0.0),
+        own_acceleration=(0.0, 0.0),
+        spin=spin,
+        dynamic=False,
+    )
+
+
+def sensed(
+    body: BodyState,
+    hit: GroundHit | None = None,
+    *,
+    g: float = G,
+    dt: float = 1 / 120,
+    substeps: int = 1,
+    up: tuple[float, float] = (0.0, 1.0),
+) -> Sensed:
+    return Sensed(body=body, up=up, dt=dt, substeps=substeps, gravity=(0.0, -g), ground=hit)
+
+
+GROUNDED_STATE = ControllerState(state=State.GROUNDED)
+
+
+@UNTIMED
+@given(mass=_MASS, g=_G, dt=_DT, substeps=_SUBSTEPS)
+def test_at_ride_height_and_at_rest_the_hover_carries_exactly_the_weight(
+    mass: float, g: float, dt: float, substeps: int
+) -> None:
+    """Law: with no height error and no speed the spring adds nothing, so the hover is the weight
+    feed-forward m·g alone, for any mass, gravity, dt and substeps (within the legs' budget)."""
+    assume(mass * g < CONFIG.hover_force)
+    s = sensed(body_state(mass=mass), ground(), g=g, dt=dt, substeps=substeps)
+    assert laws.hover(s, GROUNDED_STATE, ground(), CONFIG) == mass * g
+
+
+@UNTIMED
+@given(y=st.floats(min_value=0.3, max_value=1.4), vy=_SPEED, mass=_MASS, g=_G, dt=_DT)
+def test_the_hover_stays_within_the_legs_budget_and_never_pulls(
+    y: float, vy: float, mass: float, g: float, dt: float
+) -> None:
+    """Law: 0 ≤ hover ≤ hover_force whatever the height and speed (a floor cannot pull)."""
+    s = sensed(body_state(y=y, vy=vy, mass=mass), ground(), g=g, dt=dt)
+    assert 0.0 <= laws.hover(s, GROUNDED_STATE, ground(), CONFIG) <= CONFIG.hover_force
+
+
+@UNTIMED
+@given(low=st.floats(min_value=0.5, max_value=1.3), rise=st.floats(min_value=0.0, max_value=0.3))
+def test_the_hover_pushes_harder_the_lower_it_rides(low: float, rise: float) -> None:
+    """Law: the spring is monotone: riding lower never pushes less."""
+    hit = ground()
+    lower = laws.hover(sensed(body_state(y=low), hit), GROUNDED_STATE, hit, CONFIG)
+    higher = laws.hover(sensed(body_state(y=low + rise), hit), GROUNDED_STATE, hit, CONFIG)
+    assert lower >= higher
+
+
+def test_a_weightless_body_gets_no_hover() -> None:
+    """Law: with no gravity and a ground at rest, nothing presses the body on it: no hover."""
+    hit = ground()
+    assert laws.hover(sensed(body_state(y=0.5), hit, g=0.0), GROUNDED_STATE, hit, CONFIG) == 0.0
+
+
+@UNTIMED
+@given(
+    vx=_SPEED,
+    move=st.floats(min_value=-1.0, max_value=1.0),
+    hover=st.floats(min_value=0.0, max_value=2000.0),
+    slope=st.floats(min_value=-0.6, max_value=0.6),
+)
+def test_the_drive_acts_along_the_ground_within_budget_and_traction(
+    vx: float, move: float, hover: float, slope: float
+) -> None:
+    """Law: the drive lies along the ground's tangent and within min(ground_force,
+    traction × hover); with no hover it is the ZERO vector itself (no traction)."""
+    hit = ground(normal_angle=slope)
+    f = laws.drive(sensed(body_state(vx=vx), hit), hit, move, hover, CONFIG)
+    budget = min(CONFIG.ground_force, CONFIG.traction * hover)
+    assert math.hypot(*f) <= budget * (1.0 + TOL_LAW_REL)
+    nx, ny = hit.normal
+    assert abs(f[0] * nx + f[1] * ny) <= TOL_LAW_REL * max(1.0, budget)
+    if hover == 0.0:
+        assert f is ZERO
+
+
+@UNTIMED
+@given(ground_vx=_SPEED)
+def test_standing_still_on_a_moving_ground_needs_no_drive(ground_vx: float) -> None:
+    """Law: moving with the ground's frame and asking for no move, the drive is zero (it drives
+    relative to the ground, not to the world)."""
+    hit = ground(velocity=(ground_vx, 0.0))
+    f = laws.drive(sensed(body_state(vx=ground_vx), hit), hit, 0.0, M * G, CONFIG)
+    assert f is ZERO
+
+
+@UNTIMED
+@given(vx=_SPEED, move=st.floats(min_value=-1.0, max_value=1.0), mass=_MASS)
+def test_air_steering_never_brakes_and_stays_within_its_budget_as_a_law(
+    vx: float, move: float, mass: float
+) -> None:
+    """Law: the air steering pushes toward the move (never against it) within air_force."""
+    f = laws.steer(sensed(body_state(vx=vx, mass=mass)), move, CONFIG)
+    assert math.hypot(*f) <= CONFIG.air_force * (1.0 + TOL_LAW_REL)
+    assert f is ZERO or f[0] * move > 0.0
+
+
+@UNTIMED
+@given(angle=_ANGLE, spin=_SPEED, ground_spin=_SPEED)
+def test_the_balance_torque_turns_toward_up_and_damps_the_spin_relative_to_the_ground(
+    angle: float, spin: float, ground_spin: float
+) -> None:
+    """Law: the PD need is I·(ω_b²·err − 2ζ·ω_b·(spin − ground spin)), err the angle from the
+    axis to up: upright and turning with the ground it needs nothing."""
+    hit = ground(spin=ground_spin)
+    need = laws.balance(sensed(body_state(angle=angle, spin=spin), hit), hit, CONFIG)
+    wb = 2.0 * math.pi * CONFIG.balance_frequency
+    expected = UPRIGHT_MOMENT * (
+        wb * wb * (-angle) - 2.0 * CONFIG.balance_damping * wb * (spin - ground_spin)
+    )
+    assert need == pytest.approx(expected, rel=1e-9, abs=1e-9)
+    still = laws.balance(sensed(body_state(spin=ground_spin), hit), hit, CONFIG)
+    assert still == 0.0
+
+
+@UNTIMED
+@given(vy=_SPEED, ground_vy=_SPEED, mass=_MASS)
+def test_the_jump_leaves_at_jump_speed_relative_to_the_ground_as_a_law(
+    vy: float, ground_vy: float, mass: float
+) -> None:
+    """Law: after the take-off impulse J the speed along up relative to the ground is
+    jump_speed: (v + J/m − v_ground)·up = jump_speed."""
+    hit = ground(velocity=(0.0, ground_vy))
+    jx, jy = laws.jump(sensed(body_state(vy=vy, mass=mass), hit), hit, CONFIG)
+    assert jx == 0.0
+    assert vy + jy / mass - ground_vy == pytest.approx(CONFIG.jump_speed, rel=1e-9, abs=1e-9)
+
+
+@UNTIMED
+@given(px=_SPEED, py=_SPEED)
+def test_the_push_is_the_whole_budget_away_from_the_arms(px: float, py: float) -> None:
+    """Law: the push on a body is push_force, from where the arms reach from toward the point
+    touched (along the axis if they coincide)."""
+    assume(math.hypot(px, py) > 1e-6)
+    target = PushTarget(pymunk.Body(1.0, 1.0), (px, py), (0.0, 0.0))
+    fx, fy = laws.push(sensed(body_state()), target, CONFIG)
+    assert math.hypot(fx, fy) == pytest.approx(CONFIG.push_force, rel=TOL_LAW_REL)
+    assert fx * px + fy * py == pytest.approx(CONFIG.push_force * math.hypot(px, py), rel=1e-9)
+    on_axis = PushTarget(target.body, (0.0, 0.0), (0.0, 0.0))
+    assert laws.push(sensed(body_state()), on_axis, CONFIG) == (0.0, CONFIG.push_force)
+
+
+@given(
+    law=st.sampled_from(["hover", "drive", "jump", "push"]),
+    fx=st.floats(allow_nan=False, allow_infinity=False),
+    fy=st.floats(allow_nan=False, allow_infinity=False),
+)
+def test_every_reaction_is_equal_and_opposite(law: Reacting, fx: float, fy: float) -> None:
+    """Newton's third law: a force and its reaction add to zero, exactly."""
+    rx, ry = laws.reaction(law, (fx, fy))
+    assert (fx + rx, fy + ry) == (0.0, 0.0)
+
+
+@given(impulse=st.floats(min_value=0.0, max_value=100.0), substeps=_SUBSTEPS, dt=_DT)
+def test_the_grip_reading_is_the_impulse_over_the_substep(
+    impulse: float, substeps: int, dt: float
+) -> None:
+    """Law: the grip joint's force is its impulse over the substep it acted in."""
+    h = dt / substeps
+    assert laws.grip(impulse, h) * h == pytest.approx(impulse, rel=TOL_LAW_REL)

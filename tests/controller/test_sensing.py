@@ -162,5 +162,5 @@ def test_the_sensed_gravity_follows_every_change_of_the_field_and_the_rule() -> 
         change()
         versions.add(world.gravity_version)
         world.step()
-        assert player._gravity(world) == world.gravity_at("p")
+        assert player.senses.gravity(world) == world.gravity_at("p")
     assert len(versions) == len(changes) + 1

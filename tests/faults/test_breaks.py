@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from playground import controller, faults, movers, world
+from playground.controller import switches
 from playground.gravity import perception
 from playground.level import find, load
 from playground.world import force_api, gravity_stage
@@ -20,8 +21,9 @@ PATCHED = (
     movers.Mover,
     movers.Spin,
     perception.PerceivedGravity,
+    switches,
 )
-"""The classes breaks patch."""
+"""The classes (and the module) breaks patch."""
 
 
 def _attributes() -> list[dict[str, object]]:

@@ -3,22 +3,51 @@ giving a verdict."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import pytest
 
 from playground import controller, faults
+from playground.controller import GroundHit, Laws, Sensed
+from playground.faults import patching
 from playground.faults.catalog import BreakError
-from playground.faults.patching import after, with_argument
+from playground.faults.patching import after, controller_laws, with_argument
 from playground.level import find, load
+from playground.vec import Vec
 
 
 def test_a_break_that_cannot_apply_says_which_and_why(monkeypatch: pytest.MonkeyPatch) -> None:
     """When the method a break patches is gone (a refactor renamed it), the run reports the break
     and the missing method instead of a verdict."""
-    monkeypatch.delattr(controller.Controller, "_balance")
-    outcome = faults.run(load(find("rest")), "rest", "balance_off")
+    monkeypatch.delattr(controller.Controller, "step")
+    outcome = faults.run(load(find("rest")), "rest", "hover_reading")
     assert not outcome.ok
     assert outcome.error is not None
-    assert "Controller._balance" in outcome.error and "cannot apply" in outcome.error
+    assert "Controller.step" in outcome.error and "cannot apply" in outcome.error
+
+
+def test_a_law_break_whose_parameter_is_gone_cannot_apply(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A break through the force laws checks the law it wraps when it opens: a default drive law
+    that no longer takes ``hover`` (renamed in a refactor) makes ``traction_unbounded`` report
+    the law and the parameter instead of a verdict."""
+
+    def drive(sensed: Sensed, hit: GroundHit, move: float, traction: float, c: object) -> Vec:
+        return (0.0, 0.0)
+
+    monkeypatch.setattr(patching, "DEFAULT_LAWS", dataclasses.replace(Laws(), drive=drive))
+    outcome = faults.run(load(find("null_enemy")), "null_enemy", "traction_unbounded")
+    assert not outcome.ok
+    assert outcome.error is not None
+    assert "Laws.drive no longer takes 'hover'" in outcome.error
+
+
+def test_a_law_break_naming_no_law_cannot_apply() -> None:
+    """``controller_laws`` refuses a law the :class:`Laws` does not have, naming it."""
+    with (
+        pytest.raises(BreakError, match="Laws has no field 'walk'"),
+        controller_laws(walk=lambda law: law),
+    ):
+        pass
 
 
 class Door:
