@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 from playground.view import App
 from playground.view.arrows import arrow_length, body_size, weight_pixels
 from playground.view.draw import COLOURS
+from playground.view.force_arrows import support_point
 from playground.view.launcher import init_headless, level_names, show_level
 
 SIZE = (960, 540)
@@ -24,6 +25,7 @@ FRAME = 1.0 / 60.0  # s: one headless frame
 COLOUR_TOL = 10  # per channel: anti-aliased edges blend; an arrow's body is its exact colour
 MIN_PIXELS = 20  # pixels of a colour that make a drawn thing (an arrow 2 px wide and 10 px long)
 BAND_PX = 14.0  # px: half-width of the strip along which an arrow is looked for
+HEAD_SEEN = 0.6  # share of an arrow's length found in its exact colour: the head's tip blends
 TOL_DIR_RAD = math.radians(12.0)  # a drawn direction within this of the claimed one
 RING_TOL_PX = 5.0  # px: the ring is 3 px wide inward from its radius; its centre is rounded
 # to whole pixels and its edge pixels spread by one more
@@ -49,10 +51,11 @@ def at_moment(level: str, t: float | None = None) -> App:
 
 
 def mask(app: App, kind: str) -> NDArray[np.bool_]:
-    """Pixels of ``COLOURS[kind]`` outside the HUD panels (x, y indexing)."""
+    """Pixels of ``COLOURS[kind]`` outside the HUD panels and the arrows' value labels (x, y
+    indexing)."""
     arr = pygame.surfarray.array3d(app.surface).astype(int)
     hit = np.abs(arr - np.array(COLOURS[kind])).max(axis=2) <= COLOUR_TOL
-    for r in app.hud.rects:
+    for r in [*app.hud.rects, *(rect for _, _, rect in app.painter.labels)]:
         hit[r.left : r.right, r.top : r.bottom] = False
     return hit
 
@@ -85,6 +88,12 @@ def screen(app: App, name: str) -> Vec:
     b = app.world.body(name)
     c = b.local_to_world(b.center_of_gravity)
     return app.camera.to_screen((c.x, c.y))
+
+
+def foot(app: App, name: str) -> Vec:
+    """Where the support acts on ``name`` on screen (its hand or the hover's foot), px."""
+    ctrl = app.session.show.controllers[name]
+    return app.camera.to_screen(support_point(ctrl, app.world.body(name)))
 
 
 def weight_px(app: App, name: str) -> float:
@@ -177,7 +186,7 @@ def test_elevator_support_grows_above_the_weight() -> None:
     about (g + a)/g = 1.2."""
     app = at_moment("elevator")
     c = screen(app, "player")
-    up = reach(mask(app, "support_filtered"), c, (0.0, -1.0))
+    up = reach(mask(app, "support_filtered"), foot(app, "player"), (0.0, -1.0))
     down = reach(mask(app, "gravity"), c, (0.0, 1.0))
     assert down > 0.0 and up / down >= 1.1, (up, down)
 
@@ -208,8 +217,8 @@ def test_gravity_flip_shows_world_up_turned_over() -> None:
     app = at_moment("gravity_flip")
     ux, uy = compass_up(app)
     assert math.atan2(ux, uy) == pytest.approx(0.0, abs=TOL_DIR_RAD * 2)
-    c = screen(app, "player")
-    assert reach(mask(app, "support_filtered"), c, (0.0, -1.0)) >= 0.8 * weight_px(app, "player")
+    up = reach(mask(app, "support_filtered"), foot(app, "player"), (0.0, -1.0))
+    assert up >= 0.8 * weight_px(app, "player")
 
 
 def test_gravity_leap_shows_the_player_on_the_creatures_underside() -> None:
@@ -219,8 +228,8 @@ def test_gravity_leap_shows_the_player_on_the_creatures_underside() -> None:
     assert app.session.show.controllers["player"].state.value == "grounded"
     ux, uy = compass_up(app)
     assert abs(math.atan2(ux, -uy)) >= math.radians(120.0)
-    c = screen(app, "player")
-    assert reach(mask(app, "support_filtered"), c, (0.0, -1.0)) >= 0.8 * weight_px(app, "player")
+    up = reach(mask(app, "support_filtered"), foot(app, "player"), (0.0, -1.0))
+    assert up >= 0.8 * weight_px(app, "player")
 
 
 def test_incline_draws_friction_along_the_slope() -> None:
@@ -236,13 +245,24 @@ def test_incline_draws_friction_along_the_slope() -> None:
 
 def test_moving_platform_draws_the_drive_carrying_the_player() -> None:
     """moving_platform: while the platform speeds up to the right, the drive arrow at the
-    player's feet points right."""
+    player's feet points right, labelled with its value; the camera stays still in the world, so
+    a second later the player is seen farther right (the claim is motion)."""
     app = at_moment("moving_platform")
-    probe = app.session.show.controllers["player"].probe
+    ctrl = app.session.show.controllers["player"]
+    probe = ctrl.probe
     assert probe is not None
     at = app.camera.to_screen(probe.point)
     drive = mask(app, "drive")
-    assert reach(drive, at, (1.0, 0.0)) >= 8.0 and reach(drive, at, (-1.0, 0.0)) <= 3.0
+    m = app.world.body("player").mass
+    length = arrow_length(math.hypot(*ctrl.last_forces.drive), m, weight_px(app, "player"))
+    assert length >= 8.0
+    assert reach(drive, at, (1.0, 0.0)) >= HEAD_SEEN * length
+    assert reach(drive, at, (-1.0, 0.0)) <= 3.0
+    assert "drive" in {kind for kind, _, _ in app.painter.labels}
+    x0 = screen(app, "player")[0]
+    app.run_frames(60)
+    assert app.camera.centre == tuple(app.session.show.camera)
+    assert screen(app, "player")[0] - x0 >= app.camera.pixels(0.5)
 
 
 def test_null_enemy_marks_the_enemy_until_nullified() -> None:
@@ -280,20 +300,22 @@ def test_planet_keeps_the_walker_upright_as_world_up_turns() -> None:
 
 
 def test_rest_support_balances_the_weight() -> None:
-    """rest: the filtered support arrow up is as long as the weight arrow down (one weight), and
-    the raw support, the same force at rest, is drawn beside it rather than hidden under it."""
+    """rest: the filtered support arrow up from the hover's foot is as long as the weight arrow
+    down from the centre (one weight), each labelled with its value, 687 N = 1.00 m·g; the raw
+    support and the hover, the same force at rest, are drawn beside it rather than hidden."""
     app = at_moment("rest")
     c = screen(app, "player")
+    f = foot(app, "player")
     w = weight_px(app, "player")
-    up = reach(mask(app, "support_filtered"), c, (0.0, -1.0))
+    up = reach(mask(app, "support_filtered"), f, (0.0, -1.0))
     down = reach(mask(app, "gravity"), c, (0.0, 1.0))
     assert up == pytest.approx(w, rel=0.1) and down == pytest.approx(w, rel=0.1)
-    # Hover (from the feet) and raw support (from the centre) run along one line: both are seen
-    # over their whole length, side by side.
-    for kind, start in (("support", c[1]), ("hover", c[1] + app.camera.pixels(0.95))):
-        hit = mask(app, kind)[int(c[0] - BAND_PX) : int(c[0] + BAND_PX)]
-        rows = hit.any(axis=0)[int(start - w * 0.8) : int(start)]
+    for kind in ("support", "hover"):
+        hit = mask(app, kind)[int(f[0] - BAND_PX) : int(f[0] + BAND_PX)]
+        rows = hit.any(axis=0)[int(f[1] - w * 0.8) : int(f[1])]
         assert rows.mean() >= 0.95, (kind, rows.mean())
+    labels = {kind: text for kind, text, _ in app.painter.labels}
+    assert labels["gravity"] == labels["support_filtered"] == "687 N = 1.00 m·g"
 
 
 def test_rotating_room_rolls_the_camera_with_gravity() -> None:
@@ -335,3 +357,134 @@ def test_spinning_ring_draws_perceived_gravity_outward() -> None:
     hit = mask(app, "perceived")
     assert reach(hit, c, out) >= 0.8 * weight_px(app, "player")
     assert reach(hit, c, (-out[0], -out[1])) <= 3.0
+
+
+# -- readable forces (issue 26): bodies seen under their arrows, values, markers, insets --------
+
+EDGE_SEEN = 0.9
+"""Share of a body's outline points that must show its edge colour within 1 px after the arrows
+are drawn (the rest may lie under a hand, a label or a crossing arrow head)."""
+
+
+def edge_seen(app: App, name: str, kind: str) -> float:
+    """The share of ``name``'s outline points (every shape, on screen) where a pixel of
+    ``COLOURS[kind]`` lies within 1 px."""
+    arr = pygame.surfarray.array3d(app.surface).astype(int)
+    hit = np.abs(arr - np.array(COLOURS[kind])).max(axis=2) <= COLOUR_TOL
+    body = app.world.body(name)
+    cam = app.camera
+    pts: list[Vec] = []
+    for s in body.shapes:
+        if hasattr(s, "get_vertices"):
+            corners = [body.local_to_world(v) for v in s.get_vertices()]
+            for a, b in zip(corners, corners[1:] + corners[:1], strict=True):
+                pts += [cam.to_screen((a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t))
+                        for t in np.linspace(0.1, 0.9, 9)]  # fmt: skip
+        else:
+            a, b = body.local_to_world(s.a), body.local_to_world(s.b)  # type: ignore[attr-defined]
+            r = s.radius  # type: ignore[attr-defined]
+            for t in np.linspace(0.0, 1.0, 9):
+                x, y = a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t
+                nx, ny = -(b.y - a.y), b.x - a.x
+                n = math.hypot(nx, ny)
+                for side in (1.0, -1.0):
+                    pts.append(cam.to_screen((x + side * r * nx / n, y + side * r * ny / n)))
+    seen = [
+        bool(hit[max(int(x) - 1, 0) : int(x) + 2, max(int(y) - 1, 0) : int(y) + 2].any())
+        for x, y in pts
+    ]
+    return float(np.mean(seen))
+
+
+def test_planet_bundles_the_small_walkers_arrows_off_its_body() -> None:
+    """planet: at 16 px/m the walker is ~30 px tall; its arrows are bundled (gravity and the
+    support only) and start at its outline, so its own edge is seen all round (defect: 4–7
+    arrows from its centre hid it)."""
+    app = at_moment("planet")
+    assert app.painter.bundled == {"player"}
+    assert not mask(app, "hover").any()
+    assert edge_seen(app, "player", "player") >= EDGE_SEEN
+
+
+def test_crusher_draws_the_push_into_the_crate() -> None:
+    """crusher: heaving, the player's push is drawn from its head up into the crate, labelled
+    "push (on what it pushes)" (defect: a "push on itself" arrow no one understood)."""
+    heave = at_moment("crusher", 2.3)
+    texts = {e.text for e in heave.painter.legend()}
+    assert "push (on what it pushes)" in texts and "push on itself" not in texts
+
+
+def test_null_enemy_marks_the_nullified_enemy_with_what_it_still_pushes_with() -> None:
+    """null_enemy: once nullified, the enemy is ringed in its own dashed mark and tagged with
+    its hover and drive forces (defect: after X it looked like nothing at all)."""
+    app = at_moment("null_enemy", 2.0)
+    e = screen(app, "enemy")
+    ring = mask(app, "nullified")
+    xs, ys = np.nonzero(ring)
+    assert xs.size >= MIN_PIXELS and xs.min() < e[0] < xs.max() and ys.min() < e[1]
+    (tag,) = app.painter.tags
+    assert tag[0] == "enemy" and "gravity nullified" in tag[1]
+    assert "hover" in tag[1] and "drive" in tag[1]
+    assert "nullified" in {e.kind for e in app.painter.legend()}
+
+
+def test_a_player_out_of_the_window_gets_a_marker_and_a_fast_one_is_kept_in_view() -> None:
+    """rest: G sends the player up for good; the camera keeps it inside the window however
+    fast it goes; looked at from far away, a marker at the window's edge points at it
+    (defect: the camera lost it and nothing said where it went)."""
+    app = App(show_level, "rest", levels=LEVELS, size=SIZE)
+    app.run_frames(30)
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_g))
+    app.handle(pygame.event.Event(pygame.KEYUP, key=pygame.K_g))
+    app.run_frames(240)
+    p = screen(app, "player")
+    assert app.world.body("player").velocity.y > 10.0
+    assert app.surface.get_rect().collidepoint(p)
+    app.camera.centre = (app.camera.centre[0], app.camera.centre[1] - 100.0)
+    app.render()
+    (marker,) = app.painter.markers
+    assert marker[0] == "player" and marker[1][1] < SIZE[1] / 4
+    x, y = (int(c) for c in marker[1])
+    near = mask(app, "player")[x - 16 : x + 17, max(y - 16, 0) : y + 17]
+    assert near.sum() >= MIN_PIXELS
+
+
+def test_rest_free_body_inset_balances_gravity_and_the_hover() -> None:
+    """rest: the free-body inset draws the player's gravity down and the hover up, of one
+    length (they balance), and the sum m·a as nearly nothing."""
+    app = at_moment("rest")
+    diagram = app.picture().free_body
+    assert diagram is not None
+    forces = dict(diagram.forces)
+    assert forces["gravity"][1] == pytest.approx(-forces["hover"][1], rel=0.01)
+    assert math.hypot(*diagram.net) <= 0.01 * math.hypot(*forces["gravity"])
+    inset = [r for r in app.hud.rects if r.width == r.height and r.width >= 120]
+    assert len(inset) == 1
+    for kind in ("gravity", "hover"):
+        assert in_rect(app, kind, inset[0]).sum() >= MIN_PIXELS, kind
+
+
+def test_seesaw_draws_the_pivots_force_with_its_arrow() -> None:
+    """seesaw: the pivot's force on the plank is drawn as an arrow at the pivot, not only as a
+    number (defect: "883 N" without an arrow)."""
+    app = at_moment("seesaw")
+    plank = app.world.body("plank")
+    (joint,) = [
+        c for c in app.world.space.constraints if plank in (c.a, c.b) and hasattr(c, "anchor_a")
+    ]
+    local = joint.anchor_a if joint.a is plank else joint.anchor_b
+    p = plank.local_to_world(local)
+    at = app.camera.to_screen((p.x, p.y))
+    assert reach(mask(app, "joint_force"), at, (0.0, -1.0)) >= 0.5 * weight_px(app, "plank")
+
+
+def test_elevator_is_seen_rising_against_a_still_camera() -> None:
+    """elevator: the camera stays still in the world, so a second after the moment the player
+    is higher on screen by the lift's climb (defect: the following camera hid the motion)."""
+    app = at_moment("elevator")
+    y0 = screen(app, "player")[1]
+    z0 = app.world.body("player").position.y
+    app.run_frames(60)
+    climbed = app.world.body("player").position.y - z0
+    assert app.camera.centre == tuple(app.session.show.camera)
+    assert y0 - screen(app, "player")[1] == pytest.approx(app.camera.pixels(climbed), abs=1.0)

@@ -51,6 +51,11 @@ class View(Table):
         default=None, description="Body the camera follows; default: the first actor, if any."
     )
     roll: bool = Field(default=False, description="Roll the camera with the followed body's up.")
+    fixed: bool = Field(
+        default=False,
+        description="Keep the camera still at `camera` instead of following a body: for a "
+        "level whose claim is motion, seen against the world's grid.",
+    )
     overlays: list[Literal["vectors", "contacts", "joints", "reactions", "perceived"]] | None = (
         Field(
             default=None,

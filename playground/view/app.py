@@ -25,13 +25,15 @@ from playground.vec import Vec
 from playground.view.camera import Camera
 from playground.view.capture import save_picture
 from playground.view.clock import HEADLESS_FRAME, SPEEDS, Accumulator
-from playground.view.frame import draw_frame
-from playground.view.hud import Hud, StageCosts
+from playground.view.frame import Drawers, Picture, draw_frame
+from playground.view.free_body import free_body
+from playground.view.hud import Hud, HudInfo, StageCosts
+from playground.view.keyboard import CONTROLS
 from playground.view.overlay import OVERLAY_KEYS, Overlay
 from playground.view.painter import Painter
-from playground.view.pointer import Pointer
+from playground.view.pointer import Pointer, focus_notes
 from playground.view.scope import scope_on
-from playground.view.session import Session, Show
+from playground.view.session import Session, Show, roles_of
 from playground.view.tuning import Knobs, TuningPanel
 from playground.world.world import World
 
@@ -39,6 +41,7 @@ __all__ = ["App"]
 
 ZOOM_STEP = 1.25  # zoom factor per key press or wheel notch
 MAX_FPS = 240  # Hz: drawing is capped here when the display does not sync to its refresh
+KEEP_IN_VIEW = 0.15  # the followed body stays at least this share of the window inside its edges
 
 
 class App:
@@ -285,6 +288,8 @@ class App:
             self.camera.centre = (c.x, c.y)
         else:
             self.camera.follow((c.x, c.y), elapsed)
+            # Following lags a fast body by speed × follow time: never let it leave the window.
+            self.camera.keep_in_view((c.x, c.y), KEEP_IN_VIEW)
         up: Vec | None = None
         if self.roll:
             try:
@@ -300,7 +305,63 @@ class App:
 
     def render(self) -> pygame.Surface:
         """Draw the world, the overlays and the HUD onto :attr:`surface`."""
-        return draw_frame(self)
+        drawers = Drawers(self.painter, self.hud, self.tuning, self.small, self.tiny)
+        return draw_frame(self.surface, self.picture(), drawers)
+
+    def picture(self) -> Picture:
+        """What this frame shows, read from the session, the world and the app's own state."""
+        session = self.session
+        show = session.show
+        world = self.world
+        if self.selected is not None:
+            focus: str | None = self.selected
+        else:
+            focus = show.follow if show.follow in show.controllers else show.player
+        state = getattr(getattr(session.player, "state", None), "value", None)
+        watched = self.focus
+        diagram = None
+        if self.overlay.free_body and not self.compact and watched is not None:
+            diagram = free_body(world, watched, show.controllers.get(watched))
+        return Picture(
+            world=world,
+            camera=self.camera,
+            controllers=show.controllers,
+            roles=roles_of(show),
+            focus=focus,
+            selected=self.selected,
+            nullify_target=session.nearest_enemy(),
+            grab=session.grab,
+            pull=session.pull,
+            hud=HudInfo(
+                title=show.title,
+                sim_time=world.time,
+                physics_hz=self.physics_hz,
+                render_hz=self.render_hz,
+                speed=self.speed,
+                paused=self.paused,
+                state=str(state) if state is not None else None,
+                stage_costs={} if self.compact else self.costs.means,
+                notes=[] if self.compact else self._notes(),
+            ),
+            scope=self.scope if self.scope.name else None,
+            free_body=diagram,
+            compact=self.compact,
+            tuning=self.tuning.visible,
+            help=(CONTROLS, show.description) if self.show_help else None,
+        )
+
+    def _notes(self) -> list[str]:
+        """The HUD's notes: the help key, a flipped gravity, the selected body, who plays."""
+        session = self.session
+        notes = ["H: controls"]
+        if session.keyboard.flipped:
+            notes.append("own gravity flipped (G restores)")
+        notes.extend(focus_notes(self.world, self.selected, session.grab, session.pull))
+        if session.playback is not None:
+            notes.append("replaying")
+        elif session.script is not None and not session.keyboard.touched:
+            notes.append("scripted demo: press a key to take over")
+        return notes
 
     # -- live tuning -----------------------------------------------------------------------------
 

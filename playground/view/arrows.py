@@ -35,6 +35,7 @@ from playground.vec import Vec
 from playground.world.world import World
 
 __all__ = [
+    "BUNDLE_PX",
     "G0",
     "PeakHold",
     "ScreenArrow",
@@ -53,6 +54,7 @@ MIN_ARROW_PX = 2.0  # px: shorter arrows are not drawn
 PARALLEL_RAD = math.radians(12.0)  # arrows this close to parallel can hide each other
 GAP_PX = 2.0  # px: clear space kept between arrows moved apart
 MAX_SHIFTS = 8  # sideways moves tried per arrow before it is left where it is
+BUNDLE_PX = 48.0  # px: a body smaller than this on screen gets one bundle of arrows, off its body
 
 
 def weight_pixels(size_m: float, zoom: float) -> float:
@@ -87,12 +89,16 @@ def body_size(body: pymunk.Body) -> float:
 
 @dataclass(frozen=True, slots=True)
 class ScreenArrow:
-    """An arrow on screen: start and direction·length (px), colour key, width (px)."""
+    """An arrow on screen: start and direction·length (px), colour key, width (px), and what it
+    stands for: the force's magnitude (N; NaN: not a force) and the body it acts on ("": none),
+    for its label."""
 
     start: Vec
     d: Vec
     kind: str
     width: int = 2
+    newtons: float = math.nan
+    body: str = ""
 
 
 def _overlaps(a: ScreenArrow, b: ScreenArrow) -> bool:

@@ -143,6 +143,26 @@ class Camera:
         cx, cy = self.centre
         self.centre = (cx + a * (target[0] - cx), cy + a * (target[1] - cy))
 
+    def keep_in_view(self, target: Vec, margin: float) -> None:
+        """Move the centre just enough that ``target`` (m) lies at least ``margin`` (a share of
+        the window, 0 … 0.5) inside the window's edges: a fast body is never left behind.
+
+        >>> cam = Camera(size=(100, 100), pixels_per_metre=10.0)
+        >>> cam.keep_in_view((20.0, 0.0), 0.1)
+        >>> cam.to_screen((20.0, 0.0))
+        (90.0, 50.0)
+        """
+        sx, sy = self.to_screen(target)
+        w, h = self.size
+        lo_x, hi_x = margin * w, (1.0 - margin) * w
+        lo_y, hi_y = margin * h, (1.0 - margin) * h
+        ex = sx - min(max(sx, lo_x), hi_x)
+        ey = sy - min(max(sy, lo_y), hi_y)
+        if (ex, ey) == (0.0, 0.0) or not (math.isfinite(ex) and math.isfinite(ey)):
+            return
+        moved = self.to_world((w / 2.0 + ex, h / 2.0 + ey))
+        self.centre = moved
+
     def roll_toward(self, up: Vec | None, elapsed: float) -> None:
         """Turn so that the world vector ``up`` points to the top of the screen (None: level).
 

@@ -31,7 +31,9 @@ __all__ = [
     "Grip",
     "LegendEntry",
     "capsule_outline",
+    "dashed_circle",
     "draw_arrow",
+    "draw_edges",
     "draw_grid",
     "draw_grip",
     "draw_legend",
@@ -61,6 +63,8 @@ COLOURS: dict[str, Colour] = {
     "enemy": (225, 90, 80),
     "other": (120, 220, 170),
     "nullify": (255, 120, 220),
+    "nullified": (170, 255, 255),
+    "off_screen": (236, 208, 92),
     "joint": (160, 200, 160),
     "contact": (255, 230, 60),
     "normal": (255, 255, 140),
@@ -308,6 +312,46 @@ def draw_world(
     for c in world.space.constraints:
         if id(c) not in grip_joints:
             _draw_joint(surf, cam, c)
+
+
+def draw_edges(
+    surf: pygame.Surface, cam: Camera, world: World, *, roles: Mapping[str, str] | None = None
+) -> None:
+    """Stroke the edge of every dynamic body again (its colour, no fill): drawn after the
+    arrows, so a body stays visible under the forces drawn over it."""
+    by_id = {world.body(n).id: r for n, r in (roles or {}).items() if n in world.names}
+    for shape in world.space.shapes:
+        body = shape.body
+        if body is None or body.body_type != pymunk.Body.DYNAMIC:
+            continue
+        colour = _body_colour(body, by_id)
+        if isinstance(shape, pymunk.Circle):
+            c = body.local_to_world(shape.offset)
+            r = max(cam.pixels(shape.radius), MIN_RADIUS_PX)
+            outlined_polygon(surf, None, colour, _circle_outline(cam.to_screen((c.x, c.y)), r))
+        elif isinstance(shape, pymunk.Segment):
+            a, b = body.local_to_world(shape.a), body.local_to_world(shape.b)
+            r = max(cam.pixels(shape.radius), MIN_RADIUS_PX)
+            sa, sb = cam.to_screen((a.x, a.y)), cam.to_screen((b.x, b.y))
+            outlined_polygon(surf, None, colour, capsule_outline(sa, sb, r))
+        elif isinstance(shape, pymunk.Poly):
+            pts = [
+                cam.to_screen((p.x, p.y)) for p in map(body.local_to_world, shape.get_vertices())
+            ]
+            outlined_polygon(surf, None, colour, pts)
+
+
+def dashed_circle(
+    surf: pygame.Surface, colour: Colour, centre: Vec, radius: float, dashes: int = 16
+) -> None:
+    """A dashed ring of ``radius`` px around ``centre`` (px), 2 px wide."""
+    c = _clamp(centre)
+    for k in range(dashes):
+        a0 = 2.0 * math.pi * k / dashes
+        a1 = a0 + math.pi / dashes
+        p = (c[0] + radius * math.cos(a0), c[1] + radius * math.sin(a0))
+        q = (c[0] + radius * math.cos(a1), c[1] + radius * math.sin(a1))
+        pygame.draw.line(surf, colour, p, q, 2)
 
 
 def draw_arrow(surf: pygame.Surface, colour: Colour, start: Vec, d: Vec, width: int) -> None:

@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import pygame
 import pymunk
 
 from playground.vec import Vec
-from playground.view.arrows import MIN_ARROW_PX, ScreenArrow, arrow_length
+from playground.view.arrows import MIN_ARROW_PX, ScreenArrow, arrow_length, body_size
 from playground.view.camera import Camera
 from playground.view.draw import COLOURS
 from playground.world.world import World
@@ -27,8 +28,10 @@ __all__ = [
     "ending_at",
     "joint_forces",
     "joints_on",
+    "off_body",
     "perceived",
     "reactions",
+    "support_point",
     "vectors",
 ]
 
@@ -38,15 +41,48 @@ LABEL_FONT_PX = 18  # px: size of the joint-force labels
 
 
 def arrow(
-    cam: Camera, at: Vec, force: Vec, mass: float, w_px: float, kind: str, width: int = 2
+    cam: Camera,
+    at: Vec,
+    force: Vec,
+    mass: float,
+    w_px: float,
+    kind: str,
+    width: int = 2,
+    body: str = "",
 ) -> list[ScreenArrow]:
+    """The arrow of ``force`` (N) acting at ``at`` (m) on a body of ``mass`` (kg) named
+    ``body``, one weight per ``w_px`` px (none if too short to see or not finite)."""
     n = math.hypot(*force)
     length = arrow_length(n, mass, w_px)
     if not math.isfinite(n) or length < MIN_ARROW_PX:
         return []
     sx, sy = cam.vector((force[0] / n, force[1] / n))
     k = length / math.hypot(sx, sy)
-    return [ScreenArrow(cam.to_screen(at), (sx * k, sy * k), kind, width)]
+    return [ScreenArrow(cam.to_screen(at), (sx * k, sy * k), kind, width, n, body)]
+
+
+def support_point(ctrl: Any, body: pymunk.Body) -> Vec:
+    """Where the support acts on an actor (m): at the hand while it holds on, at the hover's
+    foot (the probe's ground point) while it finds ground, else at its centre of gravity."""
+    joint = getattr(ctrl, "joint", None)
+    if joint is not None:
+        a = joint.a.local_to_world(joint.anchor_a)
+        return (a.x, a.y)
+    probe = getattr(ctrl, "probe", None)
+    if probe is not None:
+        return (float(probe.point[0]), float(probe.point[1]))
+    c = body.local_to_world(body.center_of_gravity)
+    return (c.x, c.y)
+
+
+def off_body(a: ScreenArrow, radius_px: float) -> ScreenArrow:
+    """The arrow moved along itself by ``radius_px`` (px): it starts at the body's outline
+    instead of over the body (a body small on screen stays visible under its arrows)."""
+    n = math.hypot(*a.d)
+    if n <= 0.0:
+        return a
+    k = radius_px / n
+    return replace(a, start=(a.start[0] + a.d[0] * k, a.start[1] + a.d[1] * k))
 
 
 def vectors(
@@ -57,25 +93,41 @@ def vectors(
     ctrl: Any,
     peak: Vec | None,
     w_px: float,
+    *,
+    bundled: bool = False,
 ) -> list[ScreenArrow]:
+    """The body's forces, each from where it acts: gravity at its centre of gravity, the
+    support (raw and filtered) at its hand or foot, hover and drive at the foot, grip at the
+    hand; its push on what it pushes at the point it pushes. ``bundled`` (a body small on
+    screen): only gravity and the support (filtered and raw), which sums the rest, starting at
+    the body's outline so the body stays visible."""
     c = body.local_to_world(body.center_of_gravity)
     at = (c.x, c.y)
     m = body.mass
     g = world.gravity_at(name)
     pg = world.perceived_gravity(name)
     raw = peak if peak is not None else world.forces(name).support
-    out = arrow(cam, at, (m * g[0], m * g[1]), m, w_px, "gravity")
-    out += arrow(cam, at, (-m * pg[0], -m * pg[1]), m, w_px, "support_filtered", 5)
-    out += arrow(cam, at, raw, m, w_px, "support")
+    if bundled:
+        r = 0.5 * cam.pixels(body_size(body))
+        out = arrow(cam, at, (m * g[0], m * g[1]), m, w_px, "gravity", 2, name)
+        out += arrow(cam, at, (-m * pg[0], -m * pg[1]), m, w_px, "support_filtered", 5, name)
+        out += arrow(cam, at, raw, m, w_px, "support", 2, name)
+        return [off_body(a, r) for a in out]
+    foot = support_point(ctrl, body) if ctrl is not None else at
+    out = arrow(cam, at, (m * g[0], m * g[1]), m, w_px, "gravity", 2, name)
+    out += arrow(cam, foot, (-m * pg[0], -m * pg[1]), m, w_px, "support_filtered", 5, name)
+    out += arrow(cam, foot, raw, m, w_px, "support", 2, name)
     forces, origins = controller_forces(ctrl)
     pushed = getattr(ctrl, "pushed", None)
     for kind, f in forces.items():
-        arrows = arrow(cam, origins.get(kind, at), f, m, w_px, kind)
-        if kind == "push" and pushed is not None:
-            # What it pushes pushes back: drawn pressing onto the point it pushes at (its
-            # head under a crate), not from its centre down through the floor.
-            arrows = [ending_at(a) for a in arrow(cam, pushed[0], f, m, w_px, kind)]
-        out += arrows
+        if kind == "push":
+            # Drawn as what it does: the push on the body it pushes, from the point it pushes
+            # at (its head under a crate, pointing into the crate). Its recoil on the actor
+            # itself is in the support.
+            if pushed is not None:
+                out += arrow(cam, pushed[0], pushed[1], m, w_px, "push", 2, name)
+            continue
+        out += arrow(cam, origins.get(kind, at), f, m, w_px, kind, 2, name)
     return out
 
 
@@ -101,6 +153,7 @@ def contacts(
     body: pymunk.Body,
     w_px: float,
     drawn: set[str],
+    name: str = "",
 ) -> list[ScreenArrow]:
     """Per contact (a touching pair): its points, and at their middle the normal and friction
     force the other body put on this one this step."""
@@ -130,7 +183,7 @@ def contacts(
         # A contact pushes: its arrows end where it acts, coming from the other body's side
         # (a crate's load presses down onto a head, a floor pushes up into the feet).
         for force, kind in ((normal, "normal"), (friction, "friction")):
-            out += [ending_at(a) for a in arrow(cam, mid, force, m, w_px, kind, 3)]
+            out += [ending_at(a) for a in arrow(cam, mid, force, m, w_px, kind, 3, name)]
     return out
 
 
@@ -149,11 +202,15 @@ def joint_forces(
     labelled with the joint's own |impulse|/h."""
     h = world.config.dt / world.config.substeps
     reading = world.forces(name)
-    touching: list[int] = []
-    body.each_arbiter(lambda arb: touching.append(1))
     vector = reading.constraint
     if not all(math.isfinite(v) for v in vector):
-        vector = reading.engine if not touching else (math.nan, math.nan)
+        # Without the contact split: what the engine did minus what the contacts did (their
+        # impulses are exact with collision persistence 1, see docs/design.md).
+        touching: list[Vec] = []
+        body.each_arbiter(lambda arb: touching.append((arb.total_impulse.x, arb.total_impulse.y)))
+        jx = sum(j[0] for j in touching) / h
+        jy = sum(j[1] for j in touching) / h
+        vector = (reading.engine[0] - jx, reading.engine[1] - jy)
     out: list[ScreenArrow] = []
     joints = joints_on(world, body)
     for c in joints:
@@ -163,8 +220,10 @@ def joint_forces(
             continue
         p = body.local_to_world(local)
         magnitude = abs(c.impulse) / h
-        if all(math.isfinite(v) for v in vector) and len(joints) == 1:
-            out += arrow(cam, (p.x, p.y), vector, body.mass, w_px, "joint_force", 3)
+        # Rotary limits, gears and motors only turn: the one joint with anchors carries it all.
+        pushing = [j for j in joints if hasattr(j, "anchor_a")]
+        if all(math.isfinite(v) for v in vector) and pushing == [c]:
+            out += arrow(cam, (p.x, p.y), vector, body.mass, w_px, "joint_force", 3, name)
         if magnitude >= LABEL_MIN_N:
             text = f"{magnitude:.0f} N"
             label = label_font().render(text, True, COLOURS["joint_force"])

@@ -1,110 +1,135 @@
-"""The picture of one frame of the app: the grid, the world and its overlays, the mouse, the HUD
-with its notes and the scope, the overlay panel, the legend and the compass down the right edge,
-the tuning panel and the help. Every panel's rect goes into the HUD's ``rects`` (they must all fit
-the window, and pixel checks leave them out). Drawing only reads the world.
+"""The picture of one frame: :class:`Picture`, the value that says what to draw (the world and
+its camera, the actors, the watched body, the mouse, the HUD's lines, the scope, which panels),
+and :func:`draw_frame`, which draws it — the grid, the world and its overlays, the mouse, the HUD
+and the scope, the overlay panel, the legend, the compass and the free-body inset down the right
+edge, the tuning panel and the help. Every panel's rect goes into the HUD's ``rects`` (they must
+all fit the window, and pixel checks leave them out). Drawing only reads the world.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import pygame
 
+from playground.controller.mouse import Grab
+from playground.vec import Vec
+from playground.view.camera import Camera
 from playground.view.draw import COLOURS, draw_grid
-from playground.view.hud import HudInfo
-from playground.view.keyboard import CONTROLS
+from playground.view.free_body import INSET_PX, MIN_INSET_PX, FreeBody, draw_free_body
+from playground.view.hud import Hud, HudInfo
 from playground.view.overlay import draw_panel
-from playground.view.pointer import draw_mouse, focus_notes
-from playground.view.session import roles_of
+from playground.view.painter import Painter
+from playground.view.pointer import draw_mouse
+from playground.view.scope import Scope
+from playground.view.tuning import TuningPanel
+from playground.world.world import World
 
-if TYPE_CHECKING:
-    from playground.view.app import App
+__all__ = ["Drawers", "Picture", "draw_frame"]
 
-__all__ = ["draw_frame"]
+FREE_BODY_GAP_PX = 8  # px: between the free-body inset and the scope, and the window's edge
 
 
-def draw_frame(app: App) -> pygame.Surface:
-    """Draw ``app``'s current frame onto its surface and return the surface."""
-    surf = app.surface
+@dataclass(frozen=True, slots=True)
+class Picture:
+    """What one frame shows.
+
+    Attributes:
+        world, camera: the world and the camera it is seen through.
+        controllers, roles: the actors' controllers and roles, by body name.
+        focus: the body whose arrows are labelled and whose weight is the legend's scale.
+        selected: the body picked with the mouse (None: none).
+        nullify_target: the body X would nullify now (None: X would do nothing).
+        grab, pull: what the mouse holds and its last pull (N at a point, m), if anything.
+        hud: the HUD's lines; scope: the oscilloscope (None: no body watched).
+        free_body: the watched body's free-body diagram (None: not shown).
+        compact: leave out the overlay panel and write the legend small.
+        tuning: draw the tuning panel.
+        help: the controls (key, action) and the level's description, when the help is shown.
+    """
+
+    world: World
+    camera: Camera
+    controllers: Mapping[str, Any]
+    roles: Mapping[str, str]
+    focus: str | None
+    selected: str | None
+    nullify_target: str | None
+    grab: Grab | None
+    pull: tuple[Vec, Vec] | None
+    hud: HudInfo
+    scope: Scope | None
+    free_body: FreeBody | None
+    compact: bool
+    tuning: bool
+    help: tuple[Sequence[tuple[str, str]], str] | None
+
+
+@dataclass(frozen=True, slots=True)
+class Drawers:
+    """The parts that draw (and remember what they drew last): the overlays' painter, the HUD,
+    the tuning panel, and the panels' fonts."""
+
+    painter: Painter
+    hud: Hud
+    tuning: TuningPanel
+    small: pygame.font.Font
+    tiny: pygame.font.Font
+
+
+def draw_frame(surf: pygame.Surface, picture: Picture, drawers: Drawers) -> pygame.Surface:
+    """Draw ``picture`` onto ``surf`` with ``drawers`` and return ``surf``."""
     surf.fill(COLOURS["background"])
-    draw_grid(surf, app.camera)
-    _world(app, surf)
-    _hud(app, surf)
-    _panels(app, surf)
+    draw_grid(surf, picture.camera)
+    _world(surf, picture, drawers.painter)
+    drawers.hud.draw(surf, picture.hud, picture.scope)
+    _panels(surf, picture, drawers)
     return surf
 
 
-def _world(app: App, surf: pygame.Surface) -> None:
+def _world(surf: pygame.Surface, p: Picture, painter: Painter) -> None:
     """The world, its overlays, the selection marker and the mouse spring."""
-    session = app.session
-    show = session.show
-    app.painter.draw(
+    painter.draw(
         surf,
-        app.camera,
-        app.world,
-        show.controllers,
-        roles_of(show),
-        focus=app.selected
-        if app.selected is not None
-        else (show.follow if show.follow in show.controllers else show.player),
-        nullify_target=session.nearest_enemy(),
+        p.camera,
+        p.world,
+        p.controllers,
+        p.roles,
+        focus=p.focus,
+        nullify_target=p.nullify_target,
     )
-    if draw_mouse(surf, app.camera, app.world, app.selected, session.grab, session.pull):
-        app.painter.drawn.add("mouse")
+    if draw_mouse(surf, p.camera, p.world, p.selected, p.grab, p.pull):
+        painter.drawn.add("mouse")
 
 
-def _notes(app: App) -> list[str]:
-    """The HUD's notes: the help key, a flipped gravity, the selected body, who is playing."""
-    session = app.session
-    notes = ["H: controls"]
-    if session.keyboard.flipped:
-        notes.append("own gravity flipped (G restores)")
-    notes.extend(focus_notes(app.world, app.selected, session.grab, session.pull))
-    if session.playback is not None:
-        notes.append("replaying")
-    elif session.script is not None and not session.keyboard.touched:
-        notes.append("scripted demo: press a key to take over")
-    return notes
-
-
-def _hud(app: App, surf: pygame.Surface) -> None:
-    """The HUD at the top left and the scope along the bottom."""
-    state = getattr(getattr(app.session.player, "state", None), "value", None)
-    app.hud.draw(
-        surf,
-        HudInfo(
-            title=app.session.show.title,
-            sim_time=app.world.time,
-            physics_hz=app.physics_hz,
-            render_hz=app.render_hz,
-            speed=app.speed,
-            paused=app.paused,
-            state=str(state) if state is not None else None,
-            stage_costs={} if app.compact else app.costs.means,
-            notes=[] if app.compact else _notes(app),
-        ),
-        app.scope if app.scope.name else None,
-    )
-
-
-def _panels(app: App, surf: pygame.Surface) -> None:
-    """Down the right edge the overlay panel, the legend and the compass; the tuning panel
-    under the HUD; the help over everything."""
-    right = app.size[0] - 8
-    if app.compact:
+def _panels(surf: pygame.Surface, p: Picture, d: Drawers) -> None:
+    """Down the right edge the overlay panel, the legend and the compass, the free-body inset
+    above the scope; the tuning panel under the HUD; the help over everything."""
+    hud = d.hud
+    width, height = surf.get_size()
+    right = width - 8
+    if p.compact:
         panel = pygame.Rect(right, 8, 0, 0)
     else:
-        panel = draw_panel(surf, app.small, app.overlay, (right, 8))
-    font = app.tiny if app.compact else app.small
-    legend = app.painter.draw_legend(surf, font, (right, panel.bottom + 4))
-    app.hud.rects += [panel, legend]
-    compass = app.painter.draw_compass(
-        surf, app.small, app.camera, (right - 60, legend.bottom + 60)
-    )
+        panel = draw_panel(surf, d.small, d.painter.overlay, (right, 8))
+    font = d.tiny if p.compact else d.small
+    legend = d.painter.draw_legend(surf, font, (right, panel.bottom + 4))
+    hud.rects += [panel, legend]
+    compass = d.painter.draw_compass(surf, d.small, p.camera, (right - 60, legend.bottom + 60))
     if compass is not None:
-        app.hud.rects.append(compass)
-    if app.tuning.visible:
-        below = max((r.bottom for r in app.hud.rects[:2]), default=0)
-        app.hud.rects.append(app.tuning.draw(surf, (8, below + 4)))
-    if app.show_help:
-        app.hud.draw_help(surf, CONTROLS, app.session.show.description)
+        hud.rects.append(compass)
+    if p.free_body is not None:
+        above = hud.scope_layout.plot.top if hud.scope_layout is not None else height
+        bottom = min(above - 2 * FREE_BODY_GAP_PX - d.small.get_linesize(), height)
+        top = compass.bottom if compass is not None else legend.bottom
+        side = min(INSET_PX, bottom - top - FREE_BODY_GAP_PX)
+        if side >= MIN_INSET_PX:
+            rect = draw_free_body(surf, d.small, p.camera, p.free_body, (right, bottom), side)
+            hud.rects.append(rect)
+    if p.tuning:
+        below = max((r.bottom for r in hud.rects[:2]), default=0)
+        hud.rects.append(d.tuning.draw(surf, (8, below + 4)))
+    if p.help is not None:
+        hud.draw_help(surf, *p.help)

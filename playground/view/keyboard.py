@@ -29,7 +29,7 @@ CONTROLS: tuple[tuple[str, str], ...] = (
     ("PgUp / PgDn", "previous / next level"),
     ("V", "toggle force vectors"),
     ("1 / 2 / 3", "toggle contacts / joint forces / reactions"),
-    ("4 / 5", "toggle perceived gravity / world-up compass"),
+    ("4 / 5 / 6", "toggle perceived gravity / world-up compass / free-body inset"),
     ("C", "toggle camera roll"),
     ("F12", "screenshot"),
     ("T", "tuning panel (sliders; R restores the level's values)"),

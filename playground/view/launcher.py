@@ -66,6 +66,8 @@ def show_scene(name: str, scene: Any) -> Show:
     controllers = dict(scene.controllers)
     player = "player" if "player" in controllers else next(iter(controllers), None)
     follow = level.view.follow if level.view.follow in world.names else player
+    if level.view.fixed:
+        follow = None
     return Show(
         name=name,
         world=world,

@@ -28,8 +28,11 @@ OVERLAY_KEYS: dict[int, tuple[str, str]] = {
     pygame.K_3: ("reactions", "reactions"),
     pygame.K_4: ("perceived", "perceived g"),
     pygame.K_5: ("compass", "compass"),
+    pygame.K_6: ("free_body", "free-body diagram"),
 }
 """Key → (overlay field, label on the overlay panel)."""
+ALWAYS_ON = ("compass", "free_body")
+"""Overlays on in every level (until toggled off)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +46,7 @@ class Overlay:
         reactions: the reaction of hover, drive, grip and push on the body they act on.
         perceived: the perceived gravity and the perceived up.
         compass: the world-up compass and roll angle, while the camera rolls.
+        free_body: the watched body's free-body diagram, an inset.
     """
 
     vectors: bool = True
@@ -51,6 +55,7 @@ class Overlay:
     reactions: bool = False
     perceived: bool = False
     compass: bool = True
+    free_body: bool = True
 
     def toggled(self, name: str) -> Overlay:
         """This overlay with ``name`` switched."""
@@ -58,13 +63,14 @@ class Overlay:
 
     @classmethod
     def from_names(cls, names: Iterable[str]) -> Overlay:
-        """Exactly the overlays named on (the compass is on unless turned off by the keys)."""
+        """Exactly the overlays named on (the compass and the free-body inset are on unless
+        turned off by the keys)."""
         on = set(names)
         fields = [f.name for f in dataclasses.fields(cls)]
         unknown = on.difference(fields)
         if unknown:
             raise ValueError(f"overlays: unknown {sorted(unknown)}, expected some of {fields}")
-        return cls(**{f: (f in on) or f == "compass" for f in fields})
+        return cls(**{f: (f in on) or f in ALWAYS_ON for f in fields})
 
 
 def draw_panel(

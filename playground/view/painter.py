@@ -13,13 +13,23 @@ from typing import Any
 import pygame
 
 from playground.vec import Vec
-from playground.view.arrows import G0, PeakHold, ScreenArrow, body_size, spread, weight_pixels
+from playground.view.arrows import (
+    BUNDLE_PX,
+    G0,
+    PeakHold,
+    ScreenArrow,
+    body_size,
+    spread,
+    weight_pixels,
+)
 from playground.view.camera import Camera
 from playground.view.draw import (
     COLOURS,
     Grip,
     LegendEntry,
+    dashed_circle,
     draw_arrow,
+    draw_edges,
     draw_grip,
     draw_legend,
     draw_world,
@@ -41,6 +51,14 @@ COMPASS_PX = 30  # px: radius of the world-up compass
 ROLL_SHOWN_RAD = math.radians(0.5)  # the compass appears once the camera rolls this far
 NULLIFY_RING_M = 1.2  # m: radius of the ring around the body X would nullify …
 NULLIFY_RING_MIN_PX = 14.0  # px: … at least this big on screen
+NULLIFIED_GAP_PX = 6.0  # px: the nullified body's dashed ring clears its outline by this much
+MARKER_INSET_PX = 18  # px: off-screen markers sit this far inside the window's edge …
+MARKER_PX = 12.0  # px: … and are this long
+LABEL_GAP_PX = 4.0  # px: between an arrow's tip and its label
+LABELLED = frozenset(
+    {"gravity", "support_filtered", "hover", "drive", "grip", "push", "normal", "friction"}
+)
+"""The arrow kinds whose values the watched body's arrows carry."""
 
 LEGEND: dict[str, tuple[str, str]] = {
     "support_filtered": ("support, filtered", "thick"),
@@ -50,7 +68,7 @@ LEGEND: dict[str, tuple[str, str]] = {
     "drive": ("drive", "line"),
     "grip": ("grip", "line"),
     "grip_arm": ("hand (grip joint)", "thick"),
-    "push": ("push on itself", "line"),
+    "push": ("push (on what it pushes)", "line"),
     "contact": ("contact point", "dot"),
     "normal": ("contact normal", "line"),
     "friction": ("contact friction", "line"),
@@ -59,6 +77,8 @@ LEGEND: dict[str, tuple[str, str]] = {
     "perceived": ("perceived gravity", "line"),
     "up": ("perceived up", "line"),
     "nullify": ("X nullifies this", "ring"),
+    "nullified": ("gravity nullified", "ring"),
+    "off_screen": ("off screen (that way)", "dot"),
     "mouse": ("mouse pull (applied)", "line"),
 }
 """Colour key → (legend text, swatch), in the legend's order."""
@@ -84,6 +104,14 @@ class Painter:
         self.nullify_px = 0.0
         """Radius of the nullify ring drawn last frame, px (0: none)."""
         self._label_font: pygame.font.Font | None = None
+        self.bundled: set[str] = set()
+        """The bodies whose arrows were bundled last frame (small on screen)."""
+        self.labels: list[tuple[str, str, pygame.Rect]] = []
+        """The watched body's arrow labels drawn last frame: (kind, text, rect px)."""
+        self.markers: list[tuple[str, Vec]] = []
+        """The off-screen markers drawn last frame: (body, where on screen, px)."""
+        self.tags: list[tuple[str, str]] = []
+        """The nullified bodies' tags drawn last frame: (body, text)."""
 
     def sample(self, world: World) -> None:
         """Call after every physics step (feeds the peak hold)."""
@@ -119,6 +147,10 @@ class Painter:
         arrows: list[ScreenArrow] = []
         peaks = self.hold.peaks()
         self.scale_body = None
+        self.bundled = set()
+        self.labels = []
+        self.markers = []
+        self.tags = []
         for body in world.tracked_bodies:
             name = world.name_of(body)
             if name is None:
@@ -129,12 +161,17 @@ class Painter:
                 self.scale_newtons = body.mass * G0
                 self.scale_weighs = math.hypot(*world.gravity_at(name)) > 0.0
             ctrl = controllers.get(name)
+            small = cam.pixels(body_size(body)) < BUNDLE_PX
+            if small:
+                self.bundled.add(name)
             if ov.vectors:
-                arrows += vectors(cam, world, name, body, ctrl, peaks.get(name), w_px)
+                arrows += vectors(
+                    cam, world, name, body, ctrl, peaks.get(name), w_px, bundled=small
+                )
             if ov.perceived:
                 arrows += perceived(cam, world, name, body, w_px)
             if ov.contacts:
-                arrows += contacts(surf, cam, world, body, w_px, self.drawn)
+                arrows += contacts(surf, cam, world, body, w_px, self.drawn, name)
             if ov.joints:
                 arrows += joint_forces(surf, cam, world, name, body, w_px, self.drawn, self._labels)
             if ov.reactions and ctrl is not None:
@@ -142,15 +179,22 @@ class Painter:
         # Thick arrows first so thin ones stay visible on top; then moved apart.
         arrows.sort(key=lambda a: -a.width)
         window = surf.get_rect()
-        for a in spread(arrows):
+        placed = spread(arrows)
+        for a in placed:
             draw_arrow(surf, COLOURS[a.kind], a.start, a.d, a.width)
             end = (a.start[0] + a.d[0], a.start[1] + a.d[1])
             if window.clipline(a.start, end):
                 self.drawn.add(a.kind)
+        # The bodies' edges again over the arrows: a body never disappears under its forces.
+        draw_edges(surf, cam, world, roles=roles)
+        if focus is not None and focus in world.names:
+            self._label(surf, world, focus, placed)
         # The hands last: what holds on must never hide under the arrows it explains.
         for g in grips:
             if window.collidepoint(draw_grip(surf, cam, g)):
                 self.drawn.add("grip_arm")
+        self._nullified(surf, cam, world, controllers)
+        self._off_screen(surf, cam, world, roles)
         if nullify_target is not None and nullify_target in world.names:
             t = world.body(nullify_target).position
             ring = max(cam.pixels(NULLIFY_RING_M), NULLIFY_RING_MIN_PX)
@@ -159,6 +203,112 @@ class Painter:
             self.nullify_px = ring
             if window.inflate(2 * ring, 2 * ring).collidepoint(centre):
                 self.drawn.add("nullify")
+
+    def _label(
+        self, surf: pygame.Surface, world: World, name: str, arrows: list[ScreenArrow]
+    ) -> None:
+        """Write the value of each of ``name``'s force arrows beside its tip: N, and weights
+        m·g where it feels gravity. A label that would cover one already written is left out."""
+        body = world.body(name)
+        weight = body.mass * math.hypot(*world.gravity_at(name))
+        font = self._labels()
+        window = surf.get_rect()
+        taken: list[pygame.Rect] = []
+        for a in arrows:
+            if a.body != name or a.kind not in LABELLED or not math.isfinite(a.newtons):
+                continue
+            text = f"{a.newtons:.0f} N"
+            if weight > 0.0:
+                text += f" = {a.newtons / weight:.2f} m·g"
+            image = font.render(text, True, COLOURS[a.kind])
+            n = math.hypot(*a.d)
+            tip = (a.start[0] + a.d[0], a.start[1] + a.d[1])
+            ux, uy = a.d[0] / n, a.d[1] / n
+            # Beyond the tip along the arrow, the text's near edge toward the tip.
+            cx = tip[0] + ux * (LABEL_GAP_PX + image.get_width() / 2.0)
+            cy = tip[1] + uy * (LABEL_GAP_PX + image.get_height() / 2.0)
+            rect = image.get_rect(center=(round(cx), round(cy)))
+            if not window.contains(rect) or rect.collidelist(taken) >= 0:
+                continue
+            surf.blit(image, rect)
+            taken.append(rect)
+            self.labels.append((a.kind, text, rect))
+
+    def _nullified(
+        self,
+        surf: pygame.Surface,
+        cam: Camera,
+        world: World,
+        controllers: Mapping[str, Any],
+    ) -> None:
+        """Mark each actor whose gravity is nullified: a dashed ring and a tag with what its
+        hover and drive still push with (nothing, with no ground in reach)."""
+        font = self._labels()
+        for name, ctrl in controllers.items():
+            if name not in world.names or world.gravity_rule(name).scale != 0.0:
+                continue
+            body = world.body(name)
+            c = body.local_to_world(body.center_of_gravity)
+            centre = cam.to_screen((c.x, c.y))
+            ring = max(cam.pixels(0.5 * body_size(body)) + NULLIFIED_GAP_PX, NULLIFY_RING_MIN_PX)
+            dashed_circle(surf, COLOURS["nullified"], centre, ring)
+            forces = getattr(ctrl, "last_forces", None)
+            hover = math.hypot(*forces.hover) if forces is not None else 0.0
+            drive = math.hypot(*forces.drive) if forces is not None else 0.0
+            ground = "no ground in reach" if getattr(ctrl, "probe", None) is None else "on ground"
+            lines = [
+                f"{name}: gravity nullified",
+                f"hover {hover:.0f} N, drive {drive:.0f} N ({ground})",
+            ]
+            y = centre[1] - ring - NULLIFIED_GAP_PX - len(lines) * font.get_linesize()
+            for line in lines:
+                image = font.render(line, True, COLOURS["nullified"])
+                rect = image.get_rect(midtop=(round(centre[0]), round(y)))
+                surf.blit(image, rect)
+                y += font.get_linesize()
+            self.tags.append((name, " / ".join(lines)))
+            if surf.get_rect().inflate(2 * ring, 2 * ring).collidepoint(centre):
+                self.drawn.add("nullified")
+
+    def _off_screen(
+        self, surf: pygame.Surface, cam: Camera, world: World, roles: Mapping[str, str]
+    ) -> None:
+        """For each player or enemy out of the window: a triangle at the window's edge pointing
+        at it, with its name and distance (m)."""
+        window = surf.get_rect()
+        inner = window.inflate(-2 * MARKER_INSET_PX, -2 * MARKER_INSET_PX)
+        font = self._labels()
+        for name, role in roles.items():
+            if role not in ("player", "enemy") or name not in world.names:
+                continue
+            p = world.body(name).position
+            at = cam.to_screen((p.x, p.y))
+            if window.collidepoint(at):
+                continue
+            cx, cy = window.center
+            dx, dy = at[0] - cx, at[1] - cy
+            # Where the ray from the window's centre toward the body leaves the inner rect.
+            k = min(
+                (inner.width / 2.0) / abs(dx) if dx else math.inf,
+                (inner.height / 2.0) / abs(dy) if dy else math.inf,
+            )
+            mx, my = cx + dx * k, cy + dy * k
+            n = math.hypot(dx, dy)
+            ux, uy = dx / n, dy / n
+            s = MARKER_PX
+            tip = (mx + ux * s, my + uy * s)
+            left = (mx - uy * s * 0.6, my + ux * s * 0.6)
+            right = (mx + uy * s * 0.6, my - ux * s * 0.6)
+            colour = COLOURS[role]
+            pygame.draw.polygon(surf, colour, [tip, left, right])
+            centre = cam.to_world((cx, cy))
+            metres = math.hypot(p.x - centre[0], p.y - centre[1])
+            image = font.render(f"{name} {metres:.0f} m", True, colour)
+            rect = image.get_rect(center=(round(mx - ux * 2 * s), round(my - uy * 2 * s)))
+            rect.clamp_ip(window)
+            surf.blit(image, rect)
+            self.markers.append((name, (mx, my)))
+            self.drawn.add("off_screen")
 
     # -- what is on screen -----------------------------------------------------------------------
 
@@ -169,6 +319,9 @@ class Painter:
             for k, (text, swatch) in LEGEND.items()
             if k in self.drawn
         ]
+        if self.bundled and self.overlay.vectors and "support_filtered" in self.drawn:
+            names = ", ".join(sorted(self.bundled))
+            entries.append(LegendEntry("dim", f"{names}: small, arrows bundled (= zooms)", "dot"))
         if any(k in self.drawn for k in WEIGHED) and self.scale_body is not None:
             text = (
                 f"m·g of {self.scale_body} ({self.scale_newtons:.0f} N)"

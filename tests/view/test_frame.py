@@ -9,7 +9,6 @@ import pygame
 from playground import World
 from playground.view.app import App
 from playground.view.draw import COLOURS
-from playground.view.frame import draw_frame
 from playground.view.session import Show
 
 SIZE = (640, 360)
@@ -28,7 +27,7 @@ def app() -> App:
 
 def test_the_full_frame_has_the_overlay_panel_and_every_panel_fits() -> None:
     a = app()
-    surf = draw_frame(a)
+    surf = a.render()
     assert surf is a.surface
     window = surf.get_rect()
     assert all(window.contains(r) for r in a.hud.rects)
@@ -39,16 +38,16 @@ def test_the_full_frame_has_the_overlay_panel_and_every_panel_fits() -> None:
 def test_the_compact_frame_leaves_the_overlay_panel_out() -> None:
     a = app()
     a.compact = True
-    draw_frame(a)
+    a.render()
     top_right = [r for r in a.hud.rects if r.right == SIZE[0] - 8 and r.top == 8]
     assert all(r.width == 0 for r in top_right)
 
 
 def test_help_is_drawn_over_the_frame() -> None:
     a = app()
-    plain = pygame.surfarray.array3d(draw_frame(a)).copy()
+    plain = pygame.surfarray.array3d(a.render()).copy()
     a.show_help = True
-    helped = pygame.surfarray.array3d(draw_frame(a))
+    helped = pygame.surfarray.array3d(a.render())
     assert (plain != helped).any()
     text = tuple(COLOURS["text"])
     assert (helped == text).all(axis=2).sum() > (plain == text).all(axis=2).sum()
