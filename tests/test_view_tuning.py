@@ -172,3 +172,20 @@ def test_a_held_slider_follows_the_drag_across_frames() -> None:
     app.handle(pygame.event.Event(pygame.MOUSEBUTTONUP, button=1, pos=(at[-1], track.centery)))
     expected = slider.value((at[-1] - track.x) / track.width)
     assert app.session.player.config.hover_damping == pytest.approx(expected, rel=1e-12)
+
+
+def test_the_gravity_slider_scales_a_uniform_field_and_keeps_its_direction() -> None:
+    """Law: the gravity slider at half its track sets a uniform field's magnitude to half the
+    range, pointing the way it pointed, from the next step on; a level whose field is not
+    uniform (planet) has no gravity knob."""
+    from playground.gravity import Uniform
+
+    app = panel_app()
+    slider = next(s for s in SLIDERS if s.field == "gravity")
+    slide(app, "gravity", 0.5)
+    assert app.world.gravity.g == (0.0, -9.81)
+    app.frame(1.0 / 60.0)
+    field = app.world.gravity
+    assert isinstance(field, Uniform)
+    assert field.g[0] == 0.0 and field.g[1] == pytest.approx(-slider.value(0.5), rel=1e-12)
+    assert panel_app("planet").tuning.knobs.gravity is None

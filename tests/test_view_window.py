@@ -159,3 +159,35 @@ def test_real_x_events_toggle_overlays_drag_a_crate_move_a_slider_and_zoom(
     assert after == pytest.approx(before * ZOOM_STEP)
 
     assert report["resized"] == [[800, 500]] * 3
+
+
+DAMPING_DRAGGED_MIN = 0.5
+"""The hover damping slider's knob is dragged 100 px right on a 2-wide range over a ~240 px
+track: ζ rises by about 0.8 from 1.0; at least 0.5 of it says the knob followed the mouse."""
+
+
+@pytest.mark.skipif(
+    shutil.which("xvfb-run") is None or shutil.which("xdotool") is None,
+    reason="Debian's xvfb and xdotool are not installed",
+)
+def test_the_lab_panel_works_with_the_mouse_in_a_real_window(tmp_path: Path) -> None:
+    """Law: in the lab panel (L) real X clicks pause and resume the physics and tick the
+    contacts checkbox; a drag of the hover damping slider's knob sets the player's damping to the
+    panel's value; picking seesaw in the level browser starts it with its own overlays."""
+    env = {k: v for k, v in os.environ.items() if k not in ("SDL_VIDEODRIVER", "DISPLAY")}
+    driver = Path(__file__).with_name("lab_driver.py")
+    cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x800x24", sys.executable, str(driver)]
+    done = subprocess.run(
+        [*cmd, str(tmp_path)],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=DRIVER_TIMEOUT,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    report = json.loads((tmp_path / "lab.json").read_text(encoding="utf-8"))
+    assert report["pause"] is True and report["contacts"] is True
+    before, after = report["damping"]
+    assert after - before >= DAMPING_DRAGGED_MIN and after == report["knob"]
+    assert report["level"] == "seesaw" and report["overlay_after"] is False

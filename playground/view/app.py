@@ -29,6 +29,7 @@ from playground.view.frame import Drawers, Picture, draw_frame
 from playground.view.free_body import free_body
 from playground.view.hud import Hud, HudInfo, StageCosts
 from playground.view.keyboard import CONTROLS
+from playground.view.lab import Action, LabPanel
 from playground.view.overlay import OVERLAY_KEYS, Overlay
 from playground.view.painter import Painter
 from playground.view.pointer import Pointer, focus_notes
@@ -88,6 +89,7 @@ class App:
         self.selected: str | None = None
         """The body the HUD and the scope follow when picked with the mouse (None: the player)."""
         self.pointer = Pointer()
+        self.lab = LabPanel(self.size, self.levels)
         self.level = level
         self.start(level)
 
@@ -121,6 +123,7 @@ class App:
         self.selected = None
         self.pointer = Pointer()
         self.tuning.show(Knobs.of(world, self.session.player))
+        self.lab.level_started(level, self.overlay, self._knobs())
         self.costs = StageCosts()
         self._follow(0.0)
 
@@ -131,7 +134,13 @@ class App:
     # -- events ----------------------------------------------------------------------------------
 
     def handle(self, event: pygame.event.Event) -> None:
-        """Handle one pygame event (keys, wheel, quit)."""
+        """Handle one pygame event (keys, wheel, quit, and the lab panel's own)."""
+        action = self.lab.action(event)
+        if action is not None:
+            self._act(action)
+            return
+        if self.lab.process(event):
+            return
         if event.type == pygame.QUIT:
             self.running = False
         elif event.type == pygame.KEYDOWN:
@@ -148,6 +157,22 @@ class App:
             self._mouse_move(event.pos)
         elif event.type == pygame.MOUSEBUTTONUP and event.button == pygame.BUTTON_LEFT:
             self._mouse_up()
+
+    def _act(self, action: Action) -> None:
+        """Carry out what the lab panel asked for."""
+        if action.kind == "level" and isinstance(action.value, str):
+            self.start(action.value)
+        elif action.kind == "restart":
+            self.start(self.level)
+        elif action.kind == "pause":
+            self.paused = not self.paused
+        elif action.kind == "step":
+            self.paused = True
+            self.step()
+        elif action.kind == "overlay" and isinstance(action.value, Overlay):
+            self.overlay = action.value
+        elif action.kind == "knobs" and isinstance(action.value, Knobs):
+            self.tune(action.value)
 
     # -- mouse -----------------------------------------------------------------------------------
 
@@ -217,6 +242,9 @@ class App:
             self._cycle(1)
         elif key in OVERLAY_KEYS:
             self.overlay = self.overlay.toggled(OVERLAY_KEYS[key][0])
+            self.lab.sync(self.overlay, self._knobs())
+        elif key == pygame.K_l:
+            self.lab.show(not self.lab.visible)
         elif key == pygame.K_c:
             self.roll = not self.roll
         elif key == pygame.K_h:
@@ -269,6 +297,7 @@ class App:
             self.step()
         self._follow(elapsed)
         self.costs.update(self.world.timings, elapsed)
+        self.lab.update(elapsed, self.world, self.costs.means)
         if elapsed > 0.0:
             # Rates are smoothed over about half a second; the first frame sets them.
             a = 1.0 if self.frames == 0 else min(elapsed / 0.5, 1.0)
@@ -306,17 +335,17 @@ class App:
     def render(self) -> pygame.Surface:
         """Draw the world, the overlays and the HUD onto :attr:`surface`."""
         drawers = Drawers(self.painter, self.hud, self.tuning, self.small, self.tiny)
-        return draw_frame(self.surface, self.picture(), drawers)
+        surf = draw_frame(self.surface, self.picture(), drawers)
+        lab = self.lab.draw(surf, self.small)
+        if lab is not None:
+            self.hud.rects.append(lab)
+        return surf
 
     def picture(self) -> Picture:
         """What this frame shows, read from the session, the world and the app's own state."""
         session = self.session
         show = session.show
         world = self.world
-        if self.selected is not None:
-            focus: str | None = self.selected
-        else:
-            focus = show.follow if show.follow in show.controllers else show.player
         state = getattr(getattr(session.player, "state", None), "value", None)
         watched = self.focus
         diagram = None
@@ -327,7 +356,7 @@ class App:
             camera=self.camera,
             controllers=show.controllers,
             roles=roles_of(show),
-            focus=focus,
+            focus=watched,
             selected=self.selected,
             nullify_target=session.nearest_enemy(),
             grab=session.grab,
@@ -381,6 +410,7 @@ class App:
             self.scope = scope_on(self.world, self.scope.name, self.scope.seconds, knobs.dt)
         self.session.altered.add("live tuning")
         self.tuning.applied(self._knobs())
+        self.lab.sync(self.overlay, self._knobs())
 
     def screenshot(self, path: Path) -> Path:
         """Save the current picture (type from the suffix: .png, .bmp, .tga, .jpg), whole or not
@@ -442,6 +472,7 @@ class App:
         self.surface = pygame.Surface((w, h))
         self.size = (w, h)
         self.camera.size = (w, h)
+        self.lab.resize((w, h))
 
     def replays(self) -> list[Replay]:
         """Replays of every finished session and the current one."""

@@ -13,6 +13,7 @@ sides, computed in screen space, so it keeps its area and its outline at every a
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
@@ -39,6 +40,7 @@ __all__ = [
     "draw_legend",
     "draw_world",
     "outlined_polygon",
+    "shade_panel",
 ]
 Colour = tuple[int, int, int]
 
@@ -417,6 +419,22 @@ class LegendEntry:
     length: float = 20.0
 
 
+def shade_panel(
+    surf: pygame.Surface, rect: pygame.Rect, rgba: tuple[int, int, int, int] = (0, 0, 0, 190)
+) -> None:
+    """Darken ``rect`` of ``surf`` with the translucent colour ``rgba`` (a panel's backing)."""
+    surf.blit(_translucent(rect.size, rgba), rect.topleft)
+
+
+@functools.lru_cache(maxsize=64)
+def _translucent(size: tuple[int, int], rgba: tuple[int, int, int, int]) -> pygame.Surface:
+    # Made once per size and colour: panels keep their size from frame to frame, and a fresh
+    # per-pixel-alpha surface every frame is most of a small panel's cost.
+    panel = pygame.Surface(size, pygame.SRCALPHA)
+    panel.fill(rgba)
+    return panel
+
+
 def draw_legend(
     surf: pygame.Surface, font: pygame.font.Font, entries: Sequence[LegendEntry], topright: Vec
 ) -> pygame.Rect:
@@ -432,9 +450,7 @@ def draw_legend(
     width = max(font.size(e.text)[0] + indent(e) for e in entries) + 8
     rect = pygame.Rect(0, int(topright[1]), width, line * len(entries) + 8)
     rect.right = int(topright[0])
-    panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-    panel.fill((0, 0, 0, 190))
-    surf.blit(panel, rect.topleft)
+    shade_panel(surf, rect)
     x = rect.x
     for i, e in enumerate(entries):
         cy = rect.y + 4 + i * line + line // 2

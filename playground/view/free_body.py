@@ -14,13 +14,13 @@ import pygame
 
 from playground.vec import Vec
 from playground.view.camera import Camera
-from playground.view.draw import COLOURS, draw_arrow
+from playground.view.draw import COLOURS, draw_arrow, shade_panel
 from playground.view.force_arrows import joints_on
 from playground.world.world import World
 
 __all__ = ["INSET_PX", "MIN_INSET_PX", "FreeBody", "draw_free_body", "free_body"]
 
-INSET_PX = 190  # px: the inset's side (smaller where the window leaves less room) …
+INSET_PX = 150  # px: the inset's side (smaller where the window leaves less room) …
 MIN_INSET_PX = 120  # px: … but never smaller: below this it is left out
 REACH = 0.38  # the largest force is this share of the side long
 MIN_SHOWN_N = 0.5  # N: smaller forces are left out of the diagram
@@ -76,9 +76,7 @@ def draw_free_body(
     ``bottomright`` (px); returns its rect."""
     rect = pygame.Rect(0, 0, side, side)
     rect.bottomright = (int(bottomright[0]), int(bottomright[1]))
-    panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-    panel.fill((0, 0, 0, 200))
-    surf.blit(panel, rect.topleft)
+    shade_panel(surf, rect, (0, 0, 0, 200))
     line = font.get_linesize()
     surf.blit(
         font.render(f"free body: {diagram.name}", True, COLOURS["text"]), (rect.x + 6, rect.y + 4)

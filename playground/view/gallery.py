@@ -24,7 +24,7 @@ SEQUENCES = SEED_SEQUENCES
 
 SIZE = (640, 360)  # px: half the default window, small enough for a README
 WINDOW_WIDTH = 1280  # px: the default window, whose field of view the GIFs keep
-FPS = 10  # GIF frames per second: one drawn frame (1/60 s) in six
+FPS = 20  # GIF frames per second: one drawn frame (1/60 s) in three
 OUT = Path("docs/img/gifs")
 
 

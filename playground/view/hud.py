@@ -10,17 +10,23 @@ from dataclasses import dataclass, field
 
 import pygame
 
-from playground.view.draw import COLOURS
+from playground.view.draw import COLOURS, shade_panel
 from playground.view.scope import Scope, ScopeLayout, draw_scope
 from playground.world.schedule import Stage, StageTiming
 
-__all__ = ["Hud", "HudInfo", "StageCosts"]
+__all__ = ["MARGIN", "Hud", "HudInfo", "StageCosts", "scope_height"]
 
 TEXT = (225, 228, 235)
 DIM = (150, 155, 165)
 PANEL = (0, 0, 0, 160)
 HELP_PANEL = (12, 14, 20, 240)  # nearly opaque: the help must read over a busy scene
 MARGIN = 8  # px between panels and the window's edge
+
+
+def scope_height(window_height: int) -> int:
+    """The scope strip's height (px) in a window ``window_height`` px high (it sits ``MARGIN``
+    above the bottom edge)."""
+    return max(min(120, window_height // 5), 56)
 
 
 class StageCosts:
@@ -79,9 +85,7 @@ class Hud:
         rect: pygame.Rect,
         colour: tuple[int, int, int, int] = PANEL,
     ) -> None:
-        panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-        panel.fill(colour)
-        surf.blit(panel, rect.topleft)
+        shade_panel(surf, rect, colour)
         self.rects.append(rect)
 
     def _lines(
@@ -126,7 +130,7 @@ class Hud:
 
     def _scope(self, surf: pygame.Surface, scope: Scope) -> None:
         sw, sh = surf.get_size()
-        height = max(min(120, sh // 5), 56)
+        height = scope_height(sh)
         rect = pygame.Rect(MARGIN, sh - height - MARGIN, sw - 2 * MARGIN, height)
         self._panel(surf, rect)
         self.scope_layout = draw_scope(surf, self.small, scope, rect)

@@ -33,6 +33,7 @@ CONTROLS: tuple[tuple[str, str], ...] = (
     ("C", "toggle camera roll"),
     ("F12", "screenshot"),
     ("T", "tuning panel (sliders; R restores the level's values)"),
+    ("L", "lab panel (levels, overlays, buttons, sliders, counters, costs)"),
     ("mouse: press + move", "drag a body (soft spring)"),
     ("mouse: click", "follow a body's forces (empty space: the player)"),
     ("H", "show / hide this help"),

@@ -41,6 +41,10 @@ def init_headless() -> None:
     os.environ["SDL_VIDEODRIVER"] = "dummy"
     pygame.display.init()
     pygame.font.init()
+    if pygame.display.get_surface() is None:
+        # An off-screen 1×1 display: pygame_gui (the lab panel) converts its text surfaces to
+        # the display's format, which needs one set.
+        pygame.display.set_mode((1, 1))
 
 
 def display_available() -> bool:

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import pygame
 
 from playground.vec import Vec
-from playground.view.draw import COLOURS
+from playground.view.draw import COLOURS, shade_panel
 
 __all__ = ["OVERLAY_KEYS", "Overlay", "draw_panel"]
 
@@ -86,9 +86,7 @@ def draw_panel(
     width = max(font.size(f"{k}  {label}")[0] for k, label, _ in items) + 26
     rect = pygame.Rect(0, int(topright[1]), width, line * len(items) + 8)
     rect.right = int(topright[0])
-    panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-    panel.fill((0, 0, 0, 190))
-    surf.blit(panel, rect.topleft)
+    shade_panel(surf, rect)
     for i, (key, label, on) in enumerate(items):
         y = rect.y + 4 + i * line
         colour = COLOURS["text"] if on else COLOURS["dim"]

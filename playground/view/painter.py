@@ -1,7 +1,9 @@
 """Drawing one frame of the overlays: :class:`Painter` draws the world, every tracked body's arrows
-for the overlays that are on (spread apart so none hides another), the hands of the actors that
-hold on, the ring around the body X would nullify, the compass; and it knows what it drew, so the
-legend lists only what is on screen.
+for the overlays that are on (spread apart so none hides another, bundled for a body small on
+screen, the watched body's labelled with their values), the bodies' edges again over them, the
+hands of the actors that hold on, the marks of nullified actors and of actors out of the window,
+the ring around the body X would nullify, the compass; and it knows what it drew, so the legend
+lists only what is on screen.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ from playground.view.draw import (
     draw_grip,
     draw_legend,
     draw_world,
+    shade_panel,
 )
 from playground.view.force_arrows import (
     LABEL_FONT_PX,
@@ -349,9 +352,7 @@ class Painter:
         width = max(2 * r + 16, text.get_width() + 12)
         rect = pygame.Rect(0, 0, width, 2 * r + 16 + font.get_linesize())
         rect.center = (int(centre[0]), int(centre[1]))
-        panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-        panel.fill((0, 0, 0, 190))
-        surf.blit(panel, rect.topleft)
+        shade_panel(surf, rect)
         c = (rect.centerx, rect.y + 8 + r)
         self.compass_rect, self.compass_centre = rect, (float(c[0]), float(c[1]))
         pygame.draw.circle(surf, COLOURS["dim"], c, r, 1)

@@ -18,6 +18,7 @@ the height.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -100,6 +101,16 @@ class Scope:
         return self._ordered(self._filtered)
 
 
+@functools.lru_cache(maxsize=8)
+def _dashes(width: int) -> pygame.Surface:
+    """The m·g line's dashes, ``width`` px long, 1 px high (made once per width)."""
+    strip = pygame.Surface((width, 1))
+    strip.set_colorkey((0, 0, 0))
+    for x in range(0, width, DASH_PX * 2):
+        pygame.draw.line(strip, LINE_MG, (x, 0), (min(x + DASH_PX, width), 0), 1)
+    return strip
+
+
 def scope_on(world: World, name: str | None, seconds: float, dt: float) -> Scope:
     """A scope of ``seconds`` at step ``dt`` on the body ``name`` with its weight m·g as the
     reference line (N; none where it feels no gravity: there is no weight to compare with), or
@@ -174,8 +185,7 @@ def draw_scope(
     if scope.weight > 0.0:
         # Dashed and on top: at rest the traces run along it and show through its gaps.
         y = round(y_of(scope.weight))
-        for x in range(plot.x, plot.right, DASH_PX * 2):
-            pygame.draw.line(surf, LINE_MG, (x, y), (min(x + DASH_PX, plot.right), y), 1)
+        surf.blit(_dashes(plot.width), (plot.x, y))
         surf.blit(font.render("m·g", True, LINE_MG), (rect.x + 4, y - 8))
     # The largest clipped spike, with its value, where it happened.
     over = np.nonzero(raw > top)[0]

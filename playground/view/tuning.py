@@ -23,8 +23,9 @@ from typing import Any
 import pygame
 
 from playground.controller.spring import hover_limit
+from playground.gravity import Uniform
 from playground.vec import Vec
-from playground.view.draw import COLOURS
+from playground.view.draw import COLOURS, shade_panel
 from playground.world.world import World
 
 __all__ = ["SAFE_FRACTION", "SLIDERS", "Knobs", "Slider", "TuningPanel"]
@@ -48,6 +49,8 @@ class Knobs:
         beta: the 1€ filter's speed coefficient.
         dt: the physics step, s.
         substeps: ``space.step`` calls per step.
+        gravity: the magnitude of a uniform gravity field, m/s² (None: the field is not
+            uniform; its direction is kept, straight down where it was zero).
     """
 
     hover_frequency: float | None
@@ -56,6 +59,7 @@ class Knobs:
     beta: float
     dt: float
     substeps: int
+    gravity: float | None = None
 
     @property
     def hover_ceiling(self) -> float:
@@ -70,6 +74,7 @@ class Knobs:
         them now."""
         cfg = world.config
         hover = getattr(ctrl, "config", None)
+        field = world.gravity
         return cls(
             hover_frequency=getattr(hover, "hover_frequency", None),
             hover_damping=getattr(hover, "hover_damping", None),
@@ -77,12 +82,14 @@ class Knobs:
             beta=cfg.perception.beta,
             dt=cfg.dt,
             substeps=cfg.substeps,
+            gravity=math.hypot(*field.g) if isinstance(field, Uniform) else None,
         )
 
     def apply(self, world: World, ctrl: Any) -> None:
         """Put these values into ``world`` and ``ctrl`` between two steps (they act from the next
         step on): dt and substeps into the world's config, the 1€ parameters into perceived
-        gravity, the hover into the player's controller. Only what differs is set."""
+        gravity, the hover into the player's controller, a uniform field's magnitude into the
+        world's gravity. Only what differs is set."""
         cfg = world.config
         if (self.dt, self.substeps) != (cfg.dt, cfg.substeps):
             world.config = dataclasses.replace(cfg, dt=self.dt, substeps=self.substeps)
@@ -91,6 +98,12 @@ class Knobs:
             world.set_perception(dataclasses.replace(p, min_cutoff=self.min_cutoff, beta=self.beta))
         if self.hover_frequency is not None and self.hover_damping is not None:
             ctrl.tune_hover(self.hover_frequency, self.hover_damping)
+        field = world.gravity
+        if self.gravity is not None and isinstance(field, Uniform):
+            g = math.hypot(*field.g)
+            if self.gravity != g:
+                ux, uy = (field.g[0] / g, field.g[1] / g) if g > 0.0 else (0.0, -1.0)
+                world.gravity = (ux * self.gravity, uy * self.gravity)
 
     def stable(self) -> Knobs:
         """These knobs with the hover frequency lowered below its limit if it was past it."""
@@ -142,6 +155,7 @@ SLIDERS: tuple[Slider, ...] = (
     Slider("beta", "1€ beta", 0.0, 1.0),
     Slider("dt", "dt", 1.0 / 960.0, 1.0 / 20.0, log=True),
     Slider("substeps", "substeps", 1, 8, integer=True),
+    Slider("gravity", "gravity |g|", 0.0, 30.0),
 )
 
 
@@ -154,6 +168,8 @@ def _shown(field: str, value: float) -> str:
         return f"{value * 1e3:.2f} ms ({1.0 / value:.0f} Hz)"
     if field == "substeps":
         return f"{value:.0f}"
+    if field == "gravity":
+        return f"{value:.2f} m/s²"
     return f"{value:.3g}"
 
 
@@ -210,9 +226,7 @@ class TuningPanel:
         )
         height = len(notes) * line + len(rows) * ROW_PX + 2 * PAD
         rect = pygame.Rect(int(topleft[0]), int(topleft[1]), width, height)
-        panel = pygame.Surface(rect.size, pygame.SRCALPHA)
-        panel.fill((0, 0, 0, 200))
-        surf.blit(panel, rect.topleft)
+        shade_panel(surf, rect, (0, 0, 0, 200))
         y = rect.y + PAD
         for i, text in enumerate(notes):
             colour = COLOURS["text"] if i == 0 else COLOURS["hover"]

@@ -9,6 +9,7 @@ import pygame
 from playground import World
 from playground.view.app import App
 from playground.view.draw import COLOURS
+from playground.view.keyboard import CONTROLS
 from playground.view.session import Show
 
 SIZE = (640, 360)
@@ -51,3 +52,23 @@ def test_help_is_drawn_over_the_frame() -> None:
     assert (plain != helped).any()
     text = tuple(COLOURS["text"])
     assert (helped == text).all(axis=2).sum() > (plain == text).all(axis=2).sum()
+
+
+def test_the_frame_is_drawn_from_its_picture_alone() -> None:
+    """Law: ``draw_frame`` draws what the :class:`Picture` says: the same picture gives the same
+    pixels after the app's own state changed, and a picture that asks for the help differs."""
+    import dataclasses
+
+    from playground.view.frame import Drawers, draw_frame
+
+    a = app()
+    picture = a.picture()
+    drawers = Drawers(a.painter, a.hud, a.tuning, a.small, a.tiny)
+    first = pygame.surfarray.array3d(draw_frame(pygame.Surface(SIZE), picture, drawers)).copy()
+    a.show_help = True
+    a.paused = True
+    again = pygame.surfarray.array3d(draw_frame(pygame.Surface(SIZE), picture, drawers))
+    assert (first == again).all()
+    helped = dataclasses.replace(picture, help=(CONTROLS, "about"))
+    shown = pygame.surfarray.array3d(draw_frame(pygame.Surface(SIZE), helped, drawers))
+    assert (first != shown).any()
