@@ -4,6 +4,7 @@ only the public API."""
 from __future__ import annotations
 
 import importlib.util
+import itertools
 import math
 import os
 import re
@@ -108,3 +109,40 @@ def test_the_player_jumps_up_through_the_one_way_platform_and_stands_on_it(
     assert state is State.GROUNDED
     assert y > 105 + platformer.PLAYER.ride_height * platformer.PPM - RIDE_TOL_PX  # px: on top
     assert abs(x - 295) < 5
+
+
+RIDE_TOL_M = 0.01
+"""m: the planet walker's height over the ground may differ from its ride height by this (the
+hover's sag as the ground curves away under a walk at 4 m/s is under 3 mm)."""
+
+
+def test_the_planet_walk_goes_half_way_round_at_ride_height() -> None:
+    planet = example("planet")
+    trace = planet.main(frames=600, intents=lambda f: Intent(move=1.0))
+    assert len(trace) == 600
+    # each frame's turn round the centre, clockwise from the top (rad), summed
+    turns = [
+        math.atan2(y0 * x1 - x0 * y1, x0 * x1 + y0 * y1)
+        for (x0, y0), (x1, y1) in itertools.pairwise(trace)
+    ]
+    assert all(turn >= 0.0 for turn in turns)  # never slips back
+    assert math.degrees(math.fsum(turns)) > 190  # 10 s at 4 m/s: 209° of a lap at 10.95 m
+    ride = planet.RADIUS + 0.95  # m: the surface plus the default ride height
+    for x, y in trace[120:]:  # once at its walking speed (by 1 s)
+        assert abs(math.hypot(x, y) - ride) < RIDE_TOL_M
+
+
+TOL_FELT_N = 1.0
+"""N: standing still the felt force is m·g to within the hover's settling (under 0.1 N); in the
+air it is the solver's rounding only."""
+
+
+def test_the_lesson_sandbox_feels_weight_standing_nothing_in_the_air_and_a_landing() -> None:
+    lesson = example("lesson_sandbox")
+    felt = lesson.main(frames=240, intents=lambda f: Intent(jump=f == 60))
+    weight = lesson.PLAYER.mass * 9.81  # N
+    assert all(abs(f - weight) < TOL_FELT_N for f in felt[30:60])  # standing
+    airborne = felt[66:100]  # s 1.1–1.67: the 4 m/s jump is in the air for 0.8 s
+    assert all(f < TOL_FELT_N for f in airborne)  # free fall: it feels no gravity
+    assert max(felt[100:140]) > 2 * weight  # the landing
+    assert all(abs(f - weight) < TOL_FELT_N for f in felt[200:])  # standing again
