@@ -21,7 +21,7 @@ import numpy as np
 import pymunk
 import pytest
 
-from playground import figures
+from tools import figures
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 FACT = re.compile(r"<!-- (fact|bound):(\w+) -->([^<]*)<!-- /\1 -->")
@@ -174,7 +174,7 @@ def parting(persistence: int) -> float:
 def deeper_with_substeps() -> list[tuple[str, float, int, float, float]]:
     """The matrix's cells (scene, dt, iterations, overlap with 1 and with 4 substeps, mm) whose
     overlap is deeper with 4 substeps than with 1."""
-    from playground.figures.ch10_stability import CH10_DTS, CH10_ITERATIONS, hard_run, hard_scenes
+    from tools.figures.ch10_stability import CH10_DTS, CH10_ITERATIONS, hard_run, hard_scenes
 
     out = []
     for scene in hard_scenes():
@@ -189,7 +189,7 @@ def deeper_with_substeps() -> list[tuple[str, float, int, float, float]]:
 
 def squeeze_at_60(substeps: int) -> float:
     """The squeeze's deepest overlap at 1/60 s, 2 iterations, mm."""
-    from playground.figures.ch10_stability import hard_run
+    from tools.figures.ch10_stability import hard_run
 
     return 1000.0 * hard_run("squeeze", 1 / 60, 2, substeps).penetration
 

@@ -1,10 +1,10 @@
 """Laws of the teaching chapters (docs/chapters): the text and the code never disagree.
 
 Every number a chapter quotes sits in a marker, ``<!-- num:NAME -->3.00<!-- /num -->`` (the value
-of ``playground.figures.NUMBERS[NAME]`` rounded to the digits shown) or
+of ``tools.figures.NUMBERS[NAME]`` rounded to the digits shown) or
 ``<!-- below:NAME -->1e-12<!-- /below -->`` (an upper bound on it). The snippets themselves run as
 doctests (pytest collects ``docs/**/*.md``). The exercises' answers and each chapter's claims are
-checked as laws in tests/figures/, a file per chapter module.
+checked as laws in tests/tools/figures/, a file per chapter module.
 """
 
 from __future__ import annotations
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from playground import figures
-from playground.cli import main
+from tools import figures
+from tools.cli import main
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 CHAPTERS = sorted((DOCS / "chapters").glob("*.md"))
@@ -84,7 +84,7 @@ def test_every_chapter_shows_a_figure_the_code_makes() -> None:
 def test_one_command_regenerates_every_figure(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    """``playground figures --out DIR`` writes one PNG per figure, headless, and shows its
+    """``python -m tools figures --out DIR`` writes one PNG per figure, headless, and shows its
     progress on stderr (figure by figure, to the last)."""
     assert main(["figures", "--out", str(tmp_path)]) == 0
     for name in figures.FIGURES:

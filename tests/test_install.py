@@ -1,5 +1,7 @@
-"""Laws of the installed tool: the wheel holds the package, its levels and its schema, and a
-``pip install --user`` works from any directory.
+"""Laws of the installed tool: the wheel holds the package, its levels and its schema and none of
+the repository's tooling (tools/: the page writers, the goals, the chapter figures); a
+``pip install --user`` works from any directory, and so do a fresh venv's ``playground bench
+overhead --quick`` and ``playground faults``.
 
 The wheel is built without network (setuptools comes with the test extras) from a copy of the
 files a build reads, so a stale ``build/`` folder in the checkout cannot leak into it. The user
@@ -88,6 +90,59 @@ def test_wheel_holds_every_subpackage_the_levels_and_the_schema(wheel: Path) -> 
     assert "Classifier: Typing :: Typed" in metadata
 
 
+def test_wheel_holds_none_of_the_repositorys_tools(wheel: Path) -> None:
+    """Nothing of tools/ is in the wheel, under its own name or where the page writers, the goals
+    and the figures were (``playground/bench/``, ``playground/figures/``)."""
+    names = set(zipfile.ZipFile(wheel).namelist())
+    assert not [n for n in names if n.startswith(("tools/", "playground/figures/"))]
+    pages = {p.name for p in (ROOT / "tools").glob("*.py")} - {
+        "__init__.py",
+        "__main__.py",
+        "cli.py",
+    }
+    assert {"goals.py", "performance_page.py", "accuracy_page.py", "guide.py"} <= pages
+    bench = {
+        n.removeprefix("playground/bench/") for n in names if n.startswith("playground/bench/")
+    }
+    assert not pages & bench, sorted(pages & bench)
+
+
+def _clean_env() -> dict[str, str]:
+    """This environment without its Python settings, offline: nothing points back at the
+    checkout."""
+    env = {
+        k: v
+        for k, v in os.environ.items()
+        if k not in ("PYTHONPATH", "PYTHONHOME", "PYTHONNOUSERSITE", "VIRTUAL_ENV")
+    }
+    return env | {"PIP_NO_INDEX": "1"}
+
+
+def test_a_fresh_venv_runs_the_benchmark_and_the_faults(wheel: Path, tmp_path: Path) -> None:
+    """The wheel alone, in a fresh venv, from an empty directory: ``playground bench overhead
+    --quick`` prints its tables and ``playground faults`` catches every declared break — nothing
+    they run is left in the repository's tools/."""
+    venv, elsewhere = tmp_path / "venv", tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    env = _clean_env()
+    _run(_base_python(), "-m", "venv", "--without-pip", venv, cwd=elsewhere, env=env)
+    python = venv / "bin" / "python"
+    _run(sys.executable, "-m", "pip", "--python", python, "install", "-q", "--no-deps", wheel,
+         cwd=elsewhere, env=env)  # fmt: skip
+    # The dependencies (pymunk, numpy, pydantic, tqdm) come from this environment, offline.
+    env["PYTHONPATH"] = sysconfig.get_paths()["purelib"]
+    where = _run(python, "-c", "import playground; print(playground.__file__)", cwd=elsewhere,
+                 env=env)  # fmt: skip
+    assert Path(where.stdout.strip()).is_relative_to(venv)
+    command = venv / "bin" / "playground"
+    bench = _run(command, "bench", "overhead", "--quick", "--no-progress", cwd=elsewhere, env=env)
+    assert bench.returncode == 0, bench.stderr
+    assert "## Every shipped level" in bench.stdout and "| rest |" in bench.stdout
+    faults = _run(command, "faults", "--no-progress", cwd=elsewhere, env=env)
+    assert faults.returncode == 0, faults.stdout[-500:] + faults.stderr
+    assert "all declared breaks caught" in faults.stdout
+
+
 def _base_python() -> str:
     """The interpreter this venv was made from: a venv hides the user site, its base does not."""
     base: str = getattr(sys, "_base_executable", sys.executable)
@@ -102,12 +157,7 @@ def test_user_install_works_from_an_unrelated_directory(wheel: Path, tmp_path: P
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
     deps = sysconfig.get_paths()["purelib"]
-    env = {
-        k: v
-        for k, v in os.environ.items()
-        if k not in ("PYTHONPATH", "PYTHONHOME", "PYTHONNOUSERSITE", "VIRTUAL_ENV")
-    }
-    env |= {"PYTHONUSERBASE": str(userbase), "PIP_NO_INDEX": "1"}
+    env = _clean_env() | {"PYTHONUSERBASE": str(userbase)}
     # A distribution's Python may forbid --user installs (PEP 668); this one is a throwaway.
     env["PIP_BREAK_SYSTEM_PACKAGES"] = "1"
     python = _base_python()

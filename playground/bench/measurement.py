@@ -1,8 +1,6 @@
-"""What a performance run records: a row per shipped level and per pile measurement, each goal
-judged on them, and the machine they were measured on; as plain JSON-ready values
-(:meth:`Measurement.to_dict`, NaN written as null). :mod:`playground.bench.performance` measures
-them, :mod:`playground.bench.goals` judges them, :mod:`playground.bench.performance_page` writes
-the page.
+"""What a performance run records: a row per shipped level and per pile measurement, and the
+machine they were measured on; as plain JSON-ready values (:meth:`Measurement.to_dict`, NaN
+written as null). :mod:`playground.bench.performance` measures them.
 """
 
 from __future__ import annotations
@@ -13,7 +11,7 @@ from typing import Any
 
 from playground.world.schedule import Stage
 
-__all__ = ["STAGES", "GoalResult", "LevelRow", "Measurement", "PileRow"]
+__all__ = ["STAGES", "LevelRow", "Measurement", "PileRow"]
 
 STAGES = (Stage.INPUTS, Stage.EVENTS, Stage.GRAVITY, Stage.MOVERS, Stage.CONTROL, Stage.PHYSICS,
           Stage.FORCES, Stage.FILTER, Stage.OBSERVE)  # fmt: skip
@@ -72,30 +70,14 @@ class PileRow:
 
 
 @dataclass(frozen=True, slots=True)
-class GoalResult:
-    """A goal against its measurement: ``value`` the worst case over what the goal covers,
-    ``detail`` the measured range in words, ``off_by`` value / target (≥ 1 means as far off)."""
-
-    key: str
-    measure: str
-    goal: str
-    value: float
-    detail: str
-    met: bool
-    off_by: float
-    why: str
-
-
-@dataclass(frozen=True, slots=True)
 class Measurement:
-    """One run of :func:`measure`: the machine, the rows and the goals judged on them."""
+    """One run of :func:`~playground.bench.performance.measure`: the machine and the rows."""
 
     machine: dict[str, str]
     command: str
     repeats: int
     levels: tuple[LevelRow, ...]
     piles: tuple[PileRow, ...]
-    goals: tuple[GoalResult, ...]
 
     def to_dict(self) -> dict[str, Any]:
         """Plain JSON-ready values (NaN as None)."""

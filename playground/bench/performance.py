@@ -1,4 +1,4 @@
-"""What a step costs against the engine: every shipped level, the pile, and the goals they meet.
+"""What a step costs against the engine: every shipped level and the pile.
 
 Every figure is a ratio of interleaved blocks in one process (:mod:`playground.bench.blocks`), so
 it holds on a loaded machine where absolute microseconds move by 2×:
@@ -10,13 +10,11 @@ it holds on a loaded machine where absolute microseconds move by 2×:
   ``space.step`` of the same space; a per-body gravity field against uniform gravity; a world
   with no effect against a bare space holding the same pile.
 
-:func:`measure` runs them all and judges the goals (:mod:`playground.bench.goals`);
-:func:`from_dict` reads a run back from its JSON; :mod:`playground.bench.performance_page` writes
-the page.
+:func:`measure` runs them all; :func:`from_dict` reads a run back from its JSON.
 
 >>> m = measure(levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), repeats=1)
->>> [g.key for g in m.goals][:2]
-['one_player_us', 'one_player_rt']
+>>> [r.level for r in m.levels], sorted({r.kind for r in m.piles})
+(['rest'], ['field', 'no effect', 'scalar/vector', 'solver+1€'])
 """
 
 from __future__ import annotations
@@ -34,7 +32,6 @@ import numpy as np
 import pymunk
 
 from playground.bench.blocks import Blocks, interleave
-from playground.bench.goals import judge
 from playground.bench.measurement import STAGES, LevelRow, Measurement, PileRow
 from playground.bench.pile import floor_length, pile_names, pile_space, pile_world
 from playground.gravity import Perception, Radial
@@ -55,7 +52,7 @@ __all__ = [
 ]
 
 PILE_SIZES = (10, 100, 1000, 3000)
-"""Pile sizes measured by default (the goals quote 10, 1000 and 3000)."""
+"""Pile sizes measured by default (the performance goals quote 10, 1000 and 3000)."""
 
 CROSSOVER_SIZES = (1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 48)
 """Tracked bodies at which the scalar implementation is timed against the batch one."""
@@ -241,7 +238,7 @@ def measure(
     progress: bool = False,
     command: str = "playground bench overhead --json",
 ) -> Measurement:
-    """Time every shipped level (or ``levels``) and the piles of ``sizes``; judge the goals.
+    """Time every shipped level (or ``levels``) and the piles of ``sizes``.
 
     ``progress`` shows a bar on stderr when it is a terminal (tqdm).
     """
@@ -271,7 +268,6 @@ def measure(
         repeats=repeats,
         levels=level_rows,
         piles=pile_rows,
-        goals=judge(level_rows, pile_rows),
     )
 
 
@@ -313,7 +309,6 @@ def from_dict(data: dict[str, Any], source: str = "<data>") -> Measurement:
             repeats=int(data["repeats"]),
             levels=levels,
             piles=piles,
-            goals=judge(levels, piles),
         )
     except KeyError as exc:
         raise ValueError(

@@ -4,7 +4,7 @@ Each subcommand lives in the module of its concept, as a function ``cmd_<name>(a
 code`` and an ``add(subparsers)`` that declares its arguments: :mod:`~playground.cli.levelfiles`
 (``list``, ``check``, ``schema``), :mod:`~playground.cli.running` (``run``),
 :mod:`~playground.cli.breaks` (``faults``), :mod:`~playground.cli.pictures` (``play``,
-``figures``, ``gifs``); ``bench`` is :mod:`playground.cli.bench`. :mod:`~playground.cli.parser`
+``gifs``); ``bench`` is :mod:`playground.cli.bench`. :mod:`~playground.cli.parser`
 assembles them and dispatches; :mod:`~playground.cli.exits` maps every error to a one-line message
 on stderr and an exit code, in one place: 0 ok; 1 a check failed (or a level did not validate, for
 ``check``); 2 bad input or environment; 3 an internal error (the traceback written to a file); 130

@@ -27,7 +27,6 @@ COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None]], ...]
     ("run", "run a level headless and report its checks", running.configure),
     ("faults", "run levels under the breaks they declare to catch", breaks.configure),
     ("play", "open a level in the desktop view (pygame-ce)", pictures.configure_play),
-    ("figures", "regenerate the teaching chapters' figures (headless)", pictures.configure_figures),
     ("gifs", "regenerate the seed sequences' animated GIFs (headless)", pictures.configure_gifs),
     ("schema", "print the level JSON Schema", levelfiles.configure_schema),
     ("bench", "what accuracy and each effect cost (docs/accuracy.md)", _bench),

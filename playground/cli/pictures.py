@@ -1,20 +1,17 @@
-"""The commands that draw: ``play`` (the desktop view), ``figures`` (the chapters' plots) and
-``gifs`` (the seed sequences). Each imports its optional dependencies only when it runs."""
+"""The commands that draw: ``play`` (the desktop view) and ``gifs`` (the seed sequences). Each
+imports its optional dependencies only when it runs."""
 
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from playground.cli.exits import EXIT_OK, EXIT_USAGE
+from playground.cli.exits import EXIT_OK
 from playground.cli.preflight import writable
 
 __all__ = [
-    "cmd_figures",
     "cmd_gifs",
     "cmd_play",
-    "configure_figures",
     "configure_gifs",
     "configure_play",
 ]
@@ -32,25 +29,6 @@ def cmd_play(args: argparse.Namespace) -> int:
     from playground.view.launcher import run_play
 
     return run_play(args)
-
-
-def cmd_figures(args: argparse.Namespace) -> int:
-    """Regenerate the teaching chapters' figures (docs/chapters) headless; needs matplotlib and
-    tqdm (the ``bench`` extra)."""
-    from playground.figures import make_all
-
-    try:
-        paths = make_all(Path(args.out), progress=not args.no_progress)
-    except ImportError as exc:
-        print(
-            f"playground figures: needs matplotlib and tqdm: pip install 'pymunk-playground[bench]'"
-            f" ({exc})",
-            file=sys.stderr,
-        )
-        return EXIT_USAGE
-    for path in paths:
-        print(f"wrote {path}")
-    return EXIT_OK
 
 
 def cmd_gifs(args: argparse.Namespace) -> int:
@@ -76,12 +54,6 @@ def configure_play(p: argparse.ArgumentParser) -> None:
         "--force", action="store_true", help="overwrite existing --replay-out, --screenshot, --gif"
     )
     p.set_defaults(func=cmd_play)
-
-
-def configure_figures(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--out", default="docs/img/chapters", metavar="DIR", help="default: %(default)s")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
-    p.set_defaults(func=cmd_figures)
 
 
 def configure_gifs(p: argparse.ArgumentParser) -> None:

@@ -1,5 +1,5 @@
 """What a performance run records (:mod:`playground.bench.measurement`): its JSON writes NaN as
-null, and reading it back gives the same rows and the same verdicts."""
+null, and reading it back gives the same rows."""
 
 from __future__ import annotations
 

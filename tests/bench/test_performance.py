@@ -1,6 +1,5 @@
 """Laws of the performance benchmark (:mod:`playground.bench.performance`): a level is timed
-against its engine, and ``--from`` a file that is not a measurement is one line naming the file
-and the key.
+against its engine, and a file that is not a measurement is refused naming the file and the key.
 
 Speed itself is measured by ``playground bench overhead``, not asserted here: these tests check
 what the benchmark reports and how, on one level and a small pile (seconds).
@@ -8,12 +7,9 @@ what the benchmark reports and how, on one level and a small pile (seconds).
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from playground.bench import performance
-from playground.cli import EXIT_USAGE, main
 
 
 def test_measure_times_a_level_against_its_engine() -> None:
@@ -31,14 +27,7 @@ def test_measure_times_a_level_against_its_engine() -> None:
     assert kinds == {("solver+1€", 10), ("field", 10), ("no effect", 10), ("scalar/vector", 1)}
 
 
-def test_performance_from_a_file_that_is_not_a_measurement(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
-) -> None:
-    """``--from`` a JSON file without the measurement: one line naming the file and the key."""
-    bad = tmp_path / "bad.json"
-    bad.write_text("{}", encoding="utf-8")
-    code = main(["bench", "performance", "--from", str(bad), "--out", str(tmp_path / "p.md")])
-    assert code == EXIT_USAGE
-    err = capsys.readouterr().err
-    assert "bad.json" in err and "'levels'" in err
-    assert not (tmp_path / "p.md").exists()
+def test_from_dict_names_the_source_and_the_missing_key() -> None:
+    """A JSON document without the measurement: a ValueError naming the file and the key."""
+    with pytest.raises(ValueError, match=r"bad\.json: expected the key 'levels'"):
+        performance.from_dict({}, source="bad.json")

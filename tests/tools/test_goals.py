@@ -1,0 +1,41 @@
+"""The performance goals (:mod:`tools.goals`): each judged on the worst row it covers,
+and a missed goal says why."""
+
+from __future__ import annotations
+
+import pytest
+
+from playground.bench.measurement import LevelRow, PileRow
+from tools.goals import GOALS, judge
+
+
+def _level(name: str, players: int, us: float, control: float) -> LevelRow:
+    return LevelRow(name, 1 / 120, players, us, 1.0, us, us, us, (1 / 120) / (us * 1e-6),
+                    {"control": control, "physics": 1.0}, scalar=True)  # fmt: skip
+
+
+def test_goals_judge_the_worst_case_each_covers() -> None:
+    """Law: a goal is judged on the worst row it covers (the slowest one-player level, the
+    lowest real-time factor of any level, the costliest controller per actor, the larger piles'
+    largest overhead), and ``off_by`` says by how much it is missed."""
+    levels = [_level("a", 1, 20.0, 8.0), _level("b", 1, 30.0, 5.0), _level("c", 2, 50.0, 30.0)]
+    piles = [
+        PileRow("solver+1€", 10, 30.0, 10.0, 3.0, 2.9, 3.1, 2.0),
+        PileRow("solver+1€", 1000, 1200.0, 1000.0, 1.2, 1.1, 1.3, 0.2),
+        PileRow("solver+1€", 3000, 3150.0, 3000.0, 1.05, 1.0, 1.1, 0.05),
+        PileRow("field", 1000, 1040.0, 1000.0, 1.04, 1.0, 1.1, 0.04),
+        PileRow("no effect", 10, 11.0, 10.0, 1.1, 1.0, 1.2, 0.1),
+    ]
+    goals = {g.key: g for g in judge(levels, piles)}
+    assert set(goals) == {g.key for g in GOALS}
+    assert goals["one_player_us"].value == 30.0
+    assert not goals["one_player_us"].met
+    assert goals["one_player_us"].off_by == pytest.approx(30.0 / 25.0)
+    assert goals["one_player_rt"].value == pytest.approx((1 / 120) / 30e-6)
+    assert goals["every_level_rt"].value == pytest.approx((1 / 120) / 50e-6)
+    assert goals["controller_us"].value == 15.0  # 30 µs for 2 actors
+    assert goals["pile_10"].met and goals["pile_10"].why == ""
+    assert goals["pile_large"].value == 0.2 and not goals["pile_large"].met
+    assert goals["pile_large"].why  # a missed goal says why
+    assert goals["field_1000"].met
+    assert not goals["no_effect"].met
