@@ -13,9 +13,9 @@ from pathlib import Path
 from typing import Any
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK, EXIT_USAGE
+from playground.cli.levelfiles import load_checked
 from playground.level.errors import LevelError
 from playground.level.files import find, shipped
-from playground.level.loading import load
 
 __all__ = ["cmd_faults", "configure"]
 
@@ -42,7 +42,7 @@ def cmd_faults(args: argparse.Namespace) -> int:
         return EXIT_USAGE
     try:
         items = args.levels or list(shipped())
-        levels = [(_level_name(item), load(find(item))) for item in items]
+        levels = [(_level_name(item), load_checked(find(item))) for item in items]
     except LevelError as exc:
         print(f"playground faults: {exc}", file=sys.stderr)
         return EXIT_USAGE

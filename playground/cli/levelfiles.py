@@ -11,10 +11,11 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from pathlib import Path
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK
 from playground.cli.preflight import writable
-from playground.level.document import schema
+from playground.level.document import Level, schema
 from playground.level.errors import LevelError
 from playground.level.files import find, shipped
 from playground.level.loading import load
@@ -26,6 +27,7 @@ __all__ = [
     "configure_check",
     "configure_list",
     "configure_schema",
+    "load_checked",
     "schema_text",
 ]
 
@@ -43,6 +45,20 @@ def cmd_list(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def load_checked(path: Path) -> Level:
+    """The level file at ``path``, its declared breaks also checked against the catalogue of
+    faults (a :class:`LevelError` naming the file and each key; the level format alone knows
+    no break names)."""
+    level = load(path)
+    if level.catches:
+        from playground.faults.catalog import catch_problems
+
+        problems = catch_problems(level)
+        if problems:
+            raise LevelError(str(path), problems)
+    return level
+
+
 def cmd_check(args: argparse.Namespace) -> int:
     """Validate level files and build each scene, as ``run`` does; print every problem; exit 1
     if any file has one."""
@@ -52,7 +68,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     for item in args.files:
         try:
             path = find(item)
-            level = load(path)
+            level = load_checked(path)
             build(level, str(path))
             print(f"ok      {item}: {level.title}")
         except LevelError as exc:

@@ -1,5 +1,5 @@
-"""The catalogue of breaks: :class:`Break`, the registry :data:`BREAKS` by name, and
-:func:`apply` to open one.
+"""The catalogue of breaks: :class:`Break`, the registry :data:`BREAKS` by name, :func:`apply` to
+open one, and :func:`catch_problems` to check the breaks a level declares against it.
 
 >>> "ring_spin_stopped" in names()
 True
@@ -12,7 +12,19 @@ from collections.abc import Callable, Iterator
 from contextlib import AbstractContextManager, contextmanager
 from dataclasses import dataclass
 
-__all__ = ["BREAKS", "Break", "BreakError", "Patch", "apply", "names", "register"]
+from playground.level.document import Level
+from playground.level.errors import Problem, suggest
+
+__all__ = [
+    "BREAKS",
+    "Break",
+    "BreakError",
+    "Patch",
+    "apply",
+    "catch_problems",
+    "names",
+    "register",
+]
 
 Patch = Callable[[], AbstractContextManager[None]]
 """A break: a context manager that breaks its feature while open."""
@@ -52,6 +64,21 @@ def register(name: str) -> Callable[[Callable[[], Iterator[None]]], Patch]:
 def names() -> list[str]:
     """The names of every break, in registry order."""
     return list(BREAKS)
+
+
+def catch_problems(level: Level) -> list[Problem]:
+    """Each break ``level`` declares to catch that the catalogue does not hold, at its key
+    (``catches.i``) with the valid names; the level format checks only that each is declared
+    once."""
+    valid = names()
+    return [
+        Problem(
+            f"catches.{i}",
+            f"no break named {name!r}{suggest(name, valid)} (valid: {', '.join(valid)})",
+        )
+        for i, name in enumerate(level.catches)
+        if name not in BREAKS
+    ]
 
 
 def apply(name: str) -> AbstractContextManager[None]:

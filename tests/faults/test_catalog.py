@@ -9,7 +9,9 @@ from pathlib import Path
 import pytest
 
 from playground import faults
-from playground.level import SEED_SEQUENCES, LevelError, find, load, loads, shipped
+from playground.cli import main
+from playground.cli.exits import EXIT_FAILED, EXIT_USAGE
+from playground.level import SEED_SEQUENCES, find, load, loads, shipped
 
 ROOMS = ("spinning_ring", "rotating_room", "planet")
 """The artificial-gravity levels: they too must catch at least two breaks."""
@@ -18,18 +20,41 @@ MIN_CATCHES = 2
 """How many declared breaks a seed-sequence or room level must catch at least."""
 
 
-def test_an_unknown_break_in_a_level_names_the_file_the_key_and_the_valid_names() -> None:
-    with pytest.raises(LevelError) as info:
-        loads(
-            'title = "x"\ndescription = "y"\ncatches = ["hover_raection"]\n'
-            "[[actors]]\nname = 'p'\nposition = [0, 1]\n"
-            "[[expect]]\nbody = 'p'\nquantity = 'state'\nt = 1.0\nequals = 'airborne'\n",
-            "bad.toml",
-        )
-    text = str(info.value)
-    assert "bad.toml: catches.0: no break named 'hover_raection'" in text
+UNKNOWN_BREAK = (
+    'title = "x"\ndescription = "y"\ncatches = ["hover_reaction", "hover_raection"]\n'
+    "[[actors]]\nname = 'p'\nposition = [0, 1]\n"
+    "[[expect]]\nbody = 'p'\nquantity = 'state'\nt = 1.0\nequals = 'airborne'\n"
+)
+"""A level declaring a known break and a misspelt one (its second, ``catches.1``)."""
+
+
+def test_an_unknown_break_is_named_at_its_key_with_the_valid_names() -> None:
+    """The catalogue, not the level format, knows the break names: the level loads, and the
+    catalogue refuses its unknown break at its key, suggesting the near name."""
+    (problem,) = faults.catalog.catch_problems(loads(UNKNOWN_BREAK, "bad.toml"))
+    text = str(problem)
+    assert text.startswith("catches.1: no break named 'hover_raection'")
     assert "did you mean 'hover_reaction'" in text
     assert all(name in text for name in faults.names())
+
+
+def test_check_refuses_an_unknown_break_naming_the_file_and_the_key(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text(UNKNOWN_BREAK, encoding="utf-8")
+    assert main(["check", str(bad)]) == EXIT_FAILED
+    err = capsys.readouterr().err
+    assert f"FAILED  {bad}: 1 problem(s)\n  catches.1: no break named 'hover_raection'" in err
+
+
+def test_faults_refuses_an_unknown_break_naming_the_file_and_the_key(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text(UNKNOWN_BREAK, encoding="utf-8")
+    assert main(["faults", str(bad)]) == EXIT_USAGE
+    assert f"{bad}: catches.1: no break named 'hover_raection'" in capsys.readouterr().err
 
 
 def test_every_break_is_declared_by_a_level() -> None:
