@@ -4,11 +4,13 @@ The package's parts: :mod:`~playground.world.world` (the world, its step and its
 :mod:`~playground.world.registry` (named bodies), :mod:`~playground.world.gravity_stage`,
 :mod:`~playground.world.physics` (substeps, forces, filter), :mod:`~playground.world.schedule`
 (stages, hooks, timed events), :mod:`~playground.world.config` and
-:mod:`~playground.world.bodies` (checks, sleeping groups).
+:mod:`~playground.world.bodies` (checks, sleeping groups), :mod:`~playground.world.errors` (the
+world's own error for a call at the wrong moment).
 """
 
 from playground.world.config import WorldConfig
+from playground.world.errors import WorldUsageError
 from playground.world.schedule import Stage, StageTiming
 from playground.world.world import World
 
-__all__ = ["Stage", "StageTiming", "World", "WorldConfig"]
+__all__ = ["Stage", "StageTiming", "World", "WorldConfig", "WorldUsageError"]

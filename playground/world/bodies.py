@@ -108,7 +108,12 @@ def _points(shape: pymunk.Shape) -> list[pymunk.Vec2d]:
 
 def group(body: pymunk.Body) -> list[pymunk.Body]:
     """The dynamic bodies connected to ``body`` by contacts or joints, ``body`` first (static and
-    kinematic bodies do not connect, as in Chipmunk's own sleeping)."""
+    kinematic bodies do not connect, as in Chipmunk's own sleeping). Only joints and bodies of
+    ``body``'s space count: ``Body.constraints`` keeps a joint after it left the space, and the
+    body at its other end may have left too (putting it to sleep raised pymunk's bare
+    ``Exception('Body not added to space')``)."""
+    space = body.space
+    live = set(space.constraints) if space is not None else set()
     members = [body]
     seen = {body.id}
     k = 0
@@ -116,9 +121,10 @@ def group(body: pymunk.Body) -> list[pymunk.Body]:
         current = members[k]
         k += 1
         neighbours = _touching(current)
-        neighbours.extend(b for c in current.constraints for b in (c.a, c.b))
+        neighbours.extend(b for c in current.constraints if c in live for b in (c.a, c.b))
         for other in neighbours:
-            if other.body_type == pymunk.Body.DYNAMIC and other.id not in seen:
+            in_space = other.space is space
+            if in_space and other.body_type == pymunk.Body.DYNAMIC and other.id not in seen:
                 seen.add(other.id)
                 members.append(other)
     return members

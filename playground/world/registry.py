@@ -38,6 +38,7 @@ from playground.world.bodies import (
     group,
     surfaced,
 )
+from playground.world.errors import WorldUsageError
 
 __all__ = ["BodyRegistry"]
 
@@ -166,6 +167,7 @@ class BodyRegistry:
                 raise ValueError(f"constraint.{end}: expected a body of this world, got {body!r}")
         if constraint in self._arriving or constraint in self.space.constraints:
             raise ValueError("constraint: the joint is already in this world")
+        unsolvable(constraint)
         if waits:
             self._arriving.add(constraint)
             self._defer(lambda: self._arrive(constraint))
@@ -296,6 +298,11 @@ class BodyRegistry:
         body = self.body(name)
         if body.body_type != pymunk.Body.DYNAMIC:
             raise ValueError(f"{name}: only a dynamic body can sleep")
+        if body.space is not self.space:
+            raise WorldUsageError(
+                f"{name}: the body joins the space at the end of this step; put it to sleep "
+                "from the next step on"
+            )
         if body.is_sleeping:
             return
         members = group(body)
@@ -312,3 +319,45 @@ class BodyRegistry:
         if body.body_type != pymunk.Body.DYNAMIC:
             raise ValueError(f"{name}: only a dynamic body sleeps or wakes")
         body.activate()
+
+
+def unsolvable(constraint: pymunk.Constraint) -> None:
+    """Refuse a joint the engine cannot solve (ValueError naming why): one with no dynamic body
+    at either end (Chipmunk asserts at the first step), a gear of ratio 0 (its bodies' moments are
+    divided by it: NaN from the next step) and a parameter that is not a finite number."""
+    if all(b.body_type != pymunk.Body.DYNAMIC for b in (constraint.a, constraint.b)):
+        raise ValueError(
+            "constraint: a joint needs a dynamic body at one end at least (both ends are static "
+            "or kinematic, which the engine cannot move)"
+        )
+    for key in _JOINT_NUMBERS:
+        value = getattr(constraint, key, None)
+        if not isinstance(value, float | int):
+            continue
+        # The bounds on force and bias are infinite by default: only NaN is refused there.
+        if math.isnan(value) if key in _UNBOUNDED else not math.isfinite(value):
+            raise ValueError(f"constraint.{key}: expected a finite number, got {value!r}")
+    if isinstance(constraint, pymunk.GearJoint) and constraint.ratio == 0.0:
+        raise ValueError(
+            "constraint.ratio: a gear's ratio must not be 0 (the engine divides by it)"
+        )
+
+
+_JOINT_NUMBERS = (
+    "ratio",
+    "phase",
+    "rate",
+    "stiffness",
+    "damping",
+    "rest_length",
+    "rest_angle",
+    "distance",
+    "min",
+    "max",
+    "ratchet",
+    "max_force",
+    "max_bias",
+    "error_bias",
+)
+"""Numeric parameters of pymunk's joints (each kind has some of them)."""
+_UNBOUNDED = frozenset({"max_force", "max_bias"})

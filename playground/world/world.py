@@ -42,6 +42,7 @@ from playground.movers import Mover, Path
 from playground.params import bounded_vec, in_range
 from playground.vec import Vec
 from playground.world.config import WorldConfig
+from playground.world.errors import WorldUsageError
 from playground.world.force_api import ForceAPI
 from playground.world.gravity_stage import GravityStage
 from playground.world.guard import FORCE_COLUMNS, GUARD_EVERY, RunawayError, state_runaway
@@ -106,6 +107,7 @@ class World(ForceAPI):
         self._scalar_max_bodies = SCALAR_MAX_BODIES
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._movers: list[Mover] = []
+        self._stepping = False
         self._schedule = Schedule(self._replan)
         self._gravity = GravityStage(
             self.space, self._bodies, self._names, self.ledger, self._replan
@@ -309,7 +311,16 @@ class World(ForceAPI):
     # -- the step --------------------------------------------------------------------------------
 
     def step(self) -> None:
-        """Advance one fixed step of ``config.dt`` seconds through the stages, top-down."""
+        """Advance one fixed step of ``config.dt`` seconds through the stages, top-down.
+
+        A hook cannot step the world it runs in (:class:`WorldUsageError`): the step it is in
+        would go on with the state of a step after it.
+        """
+        if self._stepping:
+            raise WorldUsageError(
+                "step: the world is already stepping (called from a hook or event of a step); "
+                "change the world from the hook and let the step run on"
+            )
         if self._plan_dirty:
             self._plan()
         if self._bare:
@@ -326,19 +337,26 @@ class World(ForceAPI):
         gravity = self._gravity
         physics = self._physics
         tracked = physics.tracked
-        # 1. inputs: scripts and keyboards turn into intents
-        if schedule.inputs:
-            run_hooks(schedule.inputs, self)
-            lap(INPUTS)
-        # 2. events: scheduled scene changes
-        events = schedule.events
-        if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
-            schedule.run_events(self)
-            lap(EVENTS)
-        # From here to the step's end the world is locked: what a hook adds or removes waits for
-        # the end, so every stage of this step sees the same bodies.
-        self._locked = True
+        # A bare step runs no hook, so only this path can be entered again from inside.
+        self._stepping = True
         try:
+            # 1. inputs: scripts and keyboards turn into intents
+            if schedule.inputs:
+                run_hooks(schedule.inputs, self)
+                lap(INPUTS)
+            # 2. events: scheduled scene changes
+            events = schedule.events
+            if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
+                schedule.run_events(self)
+                lap(EVENTS)
+            # An input or event that tracked or untracked a body changed which implementation
+            # serves the tracked bodies: plan again, so the gravity stage hands its field in the
+            # form the physics stage now takes.
+            if self._plan_dirty:
+                self._plan()
+            # From here to the step's end the world is locked: what a hook adds or removes waits
+            # for the end, so every stage of this step sees the same bodies.
+            self._locked = True
             # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
             field = None
             if gravity.active:
@@ -384,6 +402,7 @@ class World(ForceAPI):
                 lap(OBSERVE)
         finally:
             self._locked = False
+            self._stepping = False
         if self._pending:
             self._run_pending()
 

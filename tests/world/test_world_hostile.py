@@ -6,10 +6,13 @@ instead of killing the run."""
 from __future__ import annotations
 
 import math
+import re
 import subprocess
 import sys
 import textwrap
+from typing import Any
 
+import pymunk
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -330,3 +333,128 @@ def test_guard_off_accepts_any_finite_force() -> None:
     for call, name in refused:
         with pytest.raises(ValueError, match=rf"^{name}: expected a finite number"):
             call()
+
+
+# -- misuse: the World's own errors (issue 23) ----------------------------------------------------
+
+
+def test_a_step_inside_a_step_is_refused_and_the_world_steps_on() -> None:
+    """Law: a hook that steps the world it runs in gets WorldUsageError (it recursed to
+    RecursionError, and after one nested step the outer step ran unlocked); the world is not
+    left stepping: the next step runs, locked as usual."""
+    from playground.world.errors import WorldUsageError
+    from playground.world.schedule import Stage
+
+    world = _world()
+    seen: list[str] = []
+
+    def nested(w: World) -> None:
+        try:
+            w.step()
+        except WorldUsageError as exc:
+            seen.append(str(exc))
+
+    world.on(Stage.CONTROL, nested)
+    world.on(Stage.OBSERVE, lambda w: seen.append(f"locked={w.locked}"))
+    world.step()
+    world.step()
+    assert world.steps == 2
+    assert seen[0].startswith("step: the world is already stepping")
+    assert seen[1] == "locked=True" and len(seen) == 4
+
+
+def test_tracking_again_from_an_input_hook_under_a_radial_field_runs() -> None:
+    """Law: tracking a tracked body again from an INPUTS hook under a radial field (which hands
+    the physics stage per-body forces) steps on with finite readings; it tripped a bare
+    ``assert field is None or callable(field)`` because the field came in the form of the
+    implementation planned before the hook changed it."""
+    from playground.gravity import Radial
+    from playground.world.schedule import Stage
+
+    world = World(gravity=Radial((0.0, 0.0), 9.81))
+    world.add_box("crate", mass=1.0, size=(1.0, 1.0), position=(0.0, 5.0))
+    world.track("crate")
+    world.on(Stage.INPUTS, lambda w: w.track("crate"))
+    for _ in range(10):
+        world.step()
+    assert all(math.isfinite(v) for v in world.forces("crate").engine)
+    assert world.body("crate").position.y < 5.0
+
+
+@pytest.mark.parametrize(
+    ("make", "expected"),
+    [
+        (lambda a, s, k: pymunk.GearJoint(a, s, 0.0, 0.0), "ratio: a gear's ratio must not be 0"),
+        (lambda a, s, k: pymunk.GearJoint(a, s, 0.0, NAN), "ratio: expected a finite number"),
+        (lambda a, s, k: k, "needs a dynamic body"),
+        (
+            lambda a, s, k: pymunk.DampedSpring(a, s, (0, 0), (0, 0), 1.0, INF, 0.0),
+            "stiffness: expected a finite number",
+        ),
+        (
+            lambda a, s, k: pymunk.SimpleMotor(a, s, NAN),
+            "rate: expected a finite number",
+        ),
+    ],
+    ids=["gear ratio 0", "gear ratio nan", "kinematic-static", "spring inf", "motor nan"],
+)
+def test_a_joint_the_engine_cannot_solve_is_refused(make: Any, expected: str) -> None:
+    """Law: add_constraint refuses a joint the engine cannot solve, at once and naming why: a
+    gear of ratio 0 (a body went NaN from step 2 and nothing said so until the guard, 254 steps
+    later), no dynamic end (Chipmunk's assertion at the first step), a non-finite parameter.
+    Nothing was added: the world steps on, finite."""
+    world = _world()
+    # pymunk refuses a joint with no dynamic end when it is made, not when its body turns
+    # kinematic afterwards: this one reaches the world with no dynamic end.
+    lift = pymunk.Body(1.0, 1.0)
+    turned = pymunk.PivotJoint(lift, world.space.static_body, (0.0, 3.0))
+    lift.body_type = pymunk.Body.KINEMATIC
+    lift.position = (0.0, 3.0)
+    world.add("lift", lift, pymunk.Poly.create_box(lift, (1.0, 0.2)))
+    joint = make(world.body("crate"), world.space.static_body, turned)
+    with pytest.raises(ValueError, match=re.escape(expected)):
+        world.add_constraint(joint)
+    assert list(world.space.constraints) == []
+    world.run(0.5)
+    assert all(math.isfinite(v) for v in world.body("crate").position)
+
+
+def test_sleeping_a_body_once_jointed_to_a_removed_one_works() -> None:
+    """Law: sleeping a body whose joint was removed, and the body at the joint's other end too,
+    puts it to sleep (``Body.constraints`` keeps the removed joint: the group walked into the
+    removed body and pymunk raised its bare ``Exception('Body not added to space')``)."""
+    world = World(WorldConfig(sleep_time=0.5))
+    world.add_static_segment((-20.0, 0.0), (20.0, 0.0))
+    a = world.add_box("a", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+    b = world.add_box("b", mass=1.0, size=(1.0, 1.0), position=(3.0, 0.5))
+    pin = world.add_constraint(pymunk.PinJoint(a, b))
+    world.step()
+    world.remove(pin)
+    world.remove("b")
+    world.sleep("a")
+    assert a.is_sleeping
+
+
+def test_sleeping_a_body_not_yet_in_the_space_is_refused() -> None:
+    """Law: sleeping a body added during this step (it joins the space at the step's end) is
+    refused saying when it joins, not pymunk's bare Exception; from the next step on it
+    sleeps."""
+    from playground.world.schedule import Stage
+
+    world = World(WorldConfig(sleep_time=0.5))
+    world.add_static_segment((-20.0, 0.0), (20.0, 0.0))
+    errors: list[str] = []
+
+    def add_and_sleep(w: World) -> None:
+        if w.steps == 1:
+            w.add_box("late", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+            try:
+                w.sleep("late")
+            except KeyError as exc:
+                errors.append(exc.args[0])
+
+    world.on(Stage.OBSERVE, add_and_sleep)
+    world.step()
+    assert errors == ["late: added during this step; it joins when the step ends"]
+    world.sleep("late")
+    assert world.body("late").is_sleeping
