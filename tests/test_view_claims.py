@@ -488,3 +488,34 @@ def test_elevator_is_seen_rising_against_a_still_camera() -> None:
     climbed = app.world.body("player").position.y - z0
     assert app.camera.centre == tuple(app.session.show.camera)
     assert y0 - screen(app, "player")[1] == pytest.approx(app.camera.pixels(climbed), abs=1.0)
+
+
+def test_crusher_draws_contact_forces_for_the_watched_body_only() -> None:
+    """crusher: the contact overlay marks every body's contact points but draws the contact
+    forces of the watched player only, so the weak player's crate is not hidden behind a second
+    pair of long normals (defect: ~180 px normals over both crates); a click on the weak player
+    watches it and draws its contacts' forces instead."""
+    app = at_moment("crusher")
+    weak = screen(app, "weak")
+    span = int(app.camera.pixels(1.5))
+    near = mask(app, "normal")[int(weak[0] - BAND_PX) : int(weak[0] + BAND_PX)]
+    assert not near[:, max(int(weak[1]) - span, 0) : int(weak[1]) + span].any()
+    assert mask(app, "contact")[int(weak[0]) - span : int(weak[0]) + span].sum() >= MIN_PIXELS
+    app.select("weak")
+    app.render()
+    near = mask(app, "normal")[int(weak[0] - BAND_PX) : int(weak[0] + BAND_PX)]
+    assert near.sum() >= MIN_PIXELS
+
+
+def test_the_free_body_inset_never_hides_an_actor() -> None:
+    """null_enemy at its moment: the enemy stands where the inset would go at the right edge, so
+    the inset moves to the left edge, clear of every actor and panel (it hid the enemy X would
+    nullify)."""
+    app = at_moment("null_enemy")
+    insets = [r for r in app.hud.rects if r.width == r.height and r.width >= 120]
+    assert len(insets) == 1
+    inset = insets[0]
+    assert inset.left < SIZE[0] / 2
+    for name in ("player", "enemy"):
+        assert not inset.collidepoint(screen(app, name)), name
+    assert inset.collidelist([r for r in app.hud.rects if r is not inset]) < 0

@@ -154,9 +154,11 @@ def contacts(
     w_px: float,
     drawn: set[str],
     name: str = "",
+    *,
+    forces: bool = True,
 ) -> list[ScreenArrow]:
-    """Per contact (a touching pair): its points, and at their middle the normal and friction
-    force the other body put on this one this step."""
+    """Per contact (a touching pair): its points, and (``forces``) at their middle the normal and
+    friction force the other body put on this one this step."""
     h = world.config.dt / world.config.substeps
     found: list[tuple[list[Vec], Vec, Vec]] = []
 
@@ -179,6 +181,8 @@ def contacts(
         for p in pts:
             pygame.draw.circle(surf, COLOURS["contact"], cam.to_screen(p), 4)
         drawn.add("contact")
+        if not forces:
+            continue
         mid = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
         # A contact pushes: its arrows end where it acts, coming from the other body's side
         # (a crate's load presses down onto a head, a floor pushes up into the feet).
@@ -267,7 +271,7 @@ def reactions(cam: Camera, ctrl: Any, body: pymunk.Body, w_px: float) -> list[Sc
 
 def ending_at(a: ScreenArrow) -> ScreenArrow:
     """The same arrow moved back along itself so that its tip is where it started."""
-    return ScreenArrow((a.start[0] - a.d[0], a.start[1] - a.d[1]), a.d, a.kind, a.width)
+    return replace(a, start=(a.start[0] - a.d[0], a.start[1] - a.d[1]))
 
 
 def controller_forces(ctrl: Any) -> tuple[dict[str, Vec], dict[str, Vec]]:

@@ -30,6 +30,7 @@ from playground.world.world import World
 __all__ = ["Drawers", "Picture", "draw_frame"]
 
 FREE_BODY_GAP_PX = 8  # px: between the free-body inset and the scope, and the window's edge
+ACTOR_CLEAR_PX = 80  # px: the inset keeps an actor's centre at least half this far outside it
 
 
 @dataclass(frozen=True, slots=True)
@@ -123,13 +124,41 @@ def _panels(surf: pygame.Surface, p: Picture, d: Drawers) -> None:
     if p.free_body is not None:
         above = hud.scope_layout.plot.top if hud.scope_layout is not None else height
         bottom = min(above - 2 * FREE_BODY_GAP_PX - d.small.get_linesize(), height)
-        top = compass.bottom if compass is not None else legend.bottom
-        side = min(INSET_PX, bottom - top - FREE_BODY_GAP_PX)
-        if side >= MIN_INSET_PX:
-            rect = draw_free_body(surf, d.small, p.camera, p.free_body, (right, bottom), side)
+        place = _free_body_place(p, bottom, (right, 8), hud.rects)
+        if place is not None:
+            corner, side = place
+            rect = draw_free_body(surf, d.small, p.camera, p.free_body, corner, side)
             hud.rects.append(rect)
     if p.tuning:
         below = max((r.bottom for r in hud.rects[:2]), default=0)
         hud.rects.append(d.tuning.draw(surf, (8, below + 4)))
     if p.help is not None:
         hud.draw_help(surf, *p.help)
+
+
+def _free_body_place(
+    p: Picture, bottom: int, edges: tuple[int, int], panels: Sequence[pygame.Rect]
+) -> tuple[tuple[int, int], int] | None:
+    """Where the free-body inset goes: its bottom-right corner (px) and side (px), at the right
+    edge or else the left one (``edges``: the right edge's x and the left one's), as large as
+    the panels above it leave room for, covering no actor (None: nowhere; the inset is left out
+    rather than hide what the level shows)."""
+    actors = [
+        p.camera.to_screen((b.position.x, b.position.y))
+        for b in (p.world.body(n) for n in p.roles if n in p.world.names)
+    ]
+    right, left = edges
+    for x0, x1 in ((right - INSET_PX, right), (left, left + INSET_PX)):
+        top = max(
+            (r.bottom for r in panels if r.right > x0 and r.left < x1 and r.bottom <= bottom),
+            default=0,
+        )
+        side = min(INSET_PX, bottom - top - FREE_BODY_GAP_PX)
+        if side < MIN_INSET_PX:
+            continue
+        corner = (x1, bottom) if x1 == right else (x0 + side, bottom)
+        rect = pygame.Rect(corner[0] - side, bottom - side, side, side)
+        clear = rect.inflate(ACTOR_CLEAR_PX, ACTOR_CLEAR_PX)
+        if rect.collidelist(list(panels)) < 0 and not any(clear.collidepoint(a) for a in actors):
+            return corner, side
+    return None

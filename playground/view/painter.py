@@ -58,6 +58,7 @@ NULLIFIED_GAP_PX = 6.0  # px: the nullified body's dashed ring clears its outlin
 MARKER_INSET_PX = 18  # px: off-screen markers sit this far inside the window's edge …
 MARKER_PX = 12.0  # px: … and are this long
 LABEL_GAP_PX = 4.0  # px: between an arrow's tip and its label
+LABEL_BACKING = (0, 0, 0, 150)  # the labels' translucent backing (RGBA)
 LABELLED = frozenset(
     {"gravity", "support_filtered", "hover", "drive", "grip", "push", "normal", "friction"}
 )
@@ -73,8 +74,8 @@ LEGEND: dict[str, tuple[str, str]] = {
     "grip_arm": ("hand (grip joint)", "thick"),
     "push": ("push (on what it pushes)", "line"),
     "contact": ("contact point", "dot"),
-    "normal": ("contact normal", "line"),
-    "friction": ("contact friction", "line"),
+    "normal": ("contact normal (watched body)", "line"),
+    "friction": ("contact friction (watched body)", "line"),
     "joint_force": ("joint force", "line"),
     "reaction": ("reaction on ground", "thick"),
     "perceived": ("perceived gravity", "line"),
@@ -174,7 +175,12 @@ class Painter:
             if ov.perceived:
                 arrows += perceived(cam, world, name, body, w_px)
             if ov.contacts:
-                arrows += contacts(surf, cam, world, body, w_px, self.drawn, name)
+                # Every body's contact points, but only the watched body's contact forces: each
+                # contact's pair of arrows would otherwise lie over both bodies (crusher's crates
+                # hid behind them). A click on another body watches it.
+                arrows += contacts(
+                    surf, cam, world, body, w_px, self.drawn, name, forces=name == focus
+                )
             if ov.joints:
                 arrows += joint_forces(surf, cam, world, name, body, w_px, self.drawn, self._labels)
             if ov.reactions and ctrl is not None:
@@ -217,6 +223,7 @@ class Painter:
         font = self._labels()
         window = surf.get_rect()
         taken: list[pygame.Rect] = []
+        segments = [(a.start, (a.start[0] + a.d[0], a.start[1] + a.d[1])) for a in arrows]
         for a in arrows:
             if a.body != name or a.kind not in LABELLED or not math.isfinite(a.newtons):
                 continue
@@ -225,14 +232,30 @@ class Painter:
                 text += f" = {a.newtons / weight:.2f} m·g"
             image = font.render(text, True, COLOURS[a.kind])
             n = math.hypot(*a.d)
-            tip = (a.start[0] + a.d[0], a.start[1] + a.d[1])
             ux, uy = a.d[0] / n, a.d[1] / n
-            # Beyond the tip along the arrow, the text's near edge toward the tip.
-            cx = tip[0] + ux * (LABEL_GAP_PX + image.get_width() / 2.0)
-            cy = tip[1] + uy * (LABEL_GAP_PX + image.get_height() / 2.0)
-            rect = image.get_rect(center=(round(cx), round(cy)))
-            if not window.contains(rect) or rect.collidelist(taken) >= 0:
+            half_w = LABEL_GAP_PX + image.get_width() / 2.0
+            half_h = LABEL_GAP_PX + image.get_height() / 2.0
+            tip = (a.start[0] + a.d[0], a.start[1] + a.d[1])
+            mid = (a.start[0] + a.d[0] / 2.0, a.start[1] + a.d[1] / 2.0)
+            # Beyond the tip along the arrow; else before its tail; else beside its middle.
+            spots = [
+                (tip[0] + ux * half_w, tip[1] + uy * half_h),
+                (a.start[0] - ux * half_w, a.start[1] - uy * half_h),
+                (mid[0] - uy * half_w, mid[1] + ux * half_h),
+                (mid[0] + uy * half_w, mid[1] - ux * half_h),
+            ]
+            fits = [
+                r
+                for r in (image.get_rect(center=(round(x), round(y))) for x, y in spots)
+                if window.contains(r) and r.collidelist(taken) < 0
+            ]
+            # Rather where it crosses no arrow; where each spot would, the first free one.
+            clear = [r for r in fits if not any(r.clipline(*seg) for seg in segments)]
+            if not fits:
                 continue
+            rect = (clear or fits)[0]
+            # On a dark backing: the value reads over the arrows and bodies it crosses.
+            shade_panel(surf, rect, LABEL_BACKING)
             surf.blit(image, rect)
             taken.append(rect)
             self.labels.append((a.kind, text, rect))

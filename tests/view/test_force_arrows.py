@@ -35,10 +35,10 @@ def test_a_force_too_small_or_not_finite_draws_nothing() -> None:
 
 
 def test_ending_at_puts_the_tip_where_the_arrow_started() -> None:
-    a = ScreenArrow((100.0, 50.0), (30.0, -40.0), "normal", 3)
+    a = ScreenArrow((100.0, 50.0), (30.0, -40.0), "normal", 3, 250.0, "crate")
     b = ending_at(a)
     assert (b.start[0] + b.d[0], b.start[1] + b.d[1]) == a.start
-    assert (b.d, b.kind, b.width) == (a.d, a.kind, a.width)
+    assert (b.d, b.kind, b.width, b.newtons, b.body) == (a.d, a.kind, a.width, 250.0, "crate")
 
 
 def test_controller_forces_act_at_the_probe_point() -> None:
