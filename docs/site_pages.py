@@ -27,6 +27,7 @@ API_GROUPS: dict[str, str] = {
     "world": "The world",
     "fixed_step": "The fixed step in a game loop",
     "controller": "The controller",
+    "gameplay": "Gameplay events",
     "intents": "Intents",
     "forces": "Forces",
     "gravity": "Gravity",
@@ -37,7 +38,15 @@ API_GROUPS: dict[str, str] = {
 """The API reference's pages, in order: the subpackage or module under ``playground`` that defines
 an object (its ``__module__``'s second part) → the page's title."""
 
-LEADS = ("World", "Controller", "ForceSolver", "GravityField", "Mover", "PerceivedGravity")
+LEADS = (
+    "World",
+    "Controller",
+    "Gameplay",
+    "ForceSolver",
+    "GravityField",
+    "Mover",
+    "PerceivedGravity",
+)
 """The object each API page opens with, where it has one; the rest follow alphabetically."""
 
 _ROLE = re.compile(r":(?:[a-z]+:)+`~?([^`]+)`")
@@ -243,12 +252,27 @@ def api_groups(names: list[str], modules: Mapping[str, str]) -> dict[str, list[s
     }
 
 
+def _home(name: str, obj: object) -> str:
+    """The module defining a public name: its ``__module__``, or for a value without one of
+    ours (a type alias such as a union), the module whose ``__all__`` declares it."""
+    import sys
+
+    module = str(getattr(obj, "__module__", ""))
+    if module.startswith("playground."):
+        return module
+    return next(
+        key
+        for key, mod in sorted(sys.modules.items())
+        if key.startswith("playground.") and name in getattr(mod, "__all__", ())
+    )
+
+
 def api_pages() -> dict[str, str]:
     """Every API page (path → markdown): one per group of ``playground.__all__``, and an index."""
     import playground
 
     names = sorted(playground.__all__)
-    modules = {name: getattr(playground, name).__module__ for name in names}
+    modules = {name: _home(name, getattr(playground, name)) for name in names}
     groups = api_groups(names, modules)
     pages = {}
     index = [
