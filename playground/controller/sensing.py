@@ -285,11 +285,7 @@ class Senses:
         if not self._uniform_field:
             return world.gravity_at(self._name)
         gx, gy = space_gravity(self._space)
-        rule = self._gravity_rule
-        if rule.direction is None:
-            return (rule.scale * gx, rule.scale * gy)
-        mag = rule.scale * math.hypot(gx, gy)
-        return (mag * rule.direction[0], mag * rule.direction[1])
+        return self._gravity_rule.apply(gx, gy)
 
     def probe(
         self,

@@ -6,8 +6,8 @@ implementation of the tracked bodies adds the forces to its read of every body. 
 both cost more than the physics, so while the scalar implementation serves, the shipped kinds of
 field are evaluated point by point (:func:`point_field`) with the same float operations in the
 same order, and it adds each body's force to what it has. Forces agree with the vectorised ones
-bit for bit (a rule's magnitude is ``abs`` of a complex number, the C library's ``hypot`` as
-``np.hypot``; ``math.hypot`` is not). A field of another kind is always evaluated vectorised.
+bit for bit (both apply a rule through :func:`playground.gravity.rule.ruled`). A field of another
+kind is always evaluated vectorised.
 
 >>> from playground.gravity import GravityRule, Radial
 >>> body = pymunk.Body(2.0, 1.0)
@@ -29,10 +29,10 @@ import pymunk
 
 from playground._engine import raw
 from playground.gravity.field import GravityField, Radial, RotatingRoom, Uniform, Zones
-from playground.gravity.rule import GravityRule
+from playground.gravity.rule import GravityRule, ruled
 from playground.vec import Vec
 
-__all__ = ["PlainField", "PointField", "point_field", "ruled"]
+__all__ = ["PlainField", "PointField", "point_field"]
 PointField = Callable[[float, float, float], Vec]
 """Acceleration (m/s²) at the point (x, y) (m) at time t (s)."""
 
@@ -51,19 +51,6 @@ def point_field(field: GravityField) -> PointField | None:
     if isinstance(field, Zones):
         return _zones(field)
     return None
-
-
-def ruled(gx: float, gy: float, scale: float, direction: Vec | None) -> Vec:
-    """The gravity (m/s²) of a body with a rule's ``scale`` and ``direction`` where the field is
-    (gx, gy): :func:`~playground.gravity.apply_rules` for one body, bit for bit.
-
-    >>> ruled(0.0, -9.81, 0.5, None), ruled(3.0, -4.0, 2.0, (1.0, 0.0))
-    ((0.0, -4.905), (10.0, 0.0))
-    """
-    if direction is None:
-        return (gx * scale, gy * scale)
-    mag = abs(complex(gx, gy)) * scale
-    return (direction[0] * mag, direction[1] * mag)
 
 
 def _radial(field: Radial) -> PointField:

@@ -31,7 +31,7 @@ from playground._engine.batch import lookup
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.tracked import FieldForces, FieldOnBodies
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
-from playground.gravity.plain import PlainField, PointField, point_field, ruled
+from playground.gravity.plain import PlainField, PointField, point_field
 from playground.vec import Vec
 
 __all__ = ["GravityStage"]
@@ -135,7 +135,7 @@ class GravityStage:
             rule = self._rules.get(body.id, _DEFAULT_RULE)
             x, y = body.position
             gx, gy = point(x, y, t)
-            return ruled(gx, gy, rule.scale, rule.direction)
+            return rule.apply(gx, gy)
         g = self.field.at(np.array([[body.position.x, body.position.y]]), t)
         rule = self._rules.get(body.id, _DEFAULT_RULE)
         d = np.array([rule.direction if rule.direction is not None else (np.nan, np.nan)])

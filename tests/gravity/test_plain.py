@@ -19,9 +19,8 @@ from playground.gravity import (
     Uniform,
     Zone,
     Zones,
-    apply_rules,
 )
-from playground.gravity.plain import PlainField, point_field, ruled
+from playground.gravity.plain import PlainField, point_field
 
 FIELDS: dict[str, GravityField] = {
     "uniform": Uniform((0.3, -9.81)),
@@ -69,24 +68,6 @@ def test_a_field_of_another_kind_has_no_point_form() -> None:
 
     assert point_field(Tilted()) is None
     assert point_field(Zones(Uniform(), (Zone((0.0, 0.0, 1.0, 1.0), Tilted()),))) is None
-
-
-def test_a_rule_gives_what_apply_rules_gives() -> None:
-    """Law: scale and own direction, one body at a time, equal the vectorised rules bit for
-    bit (the magnitude is the C library's hypot, as numpy's)."""
-    rng = np.random.default_rng(3)
-    g = rng.normal(size=(500, 2)) * 10.0 ** rng.uniform(-3.0, 3.0, (500, 1))
-    scale = rng.choice([0.0, 0.5, 1.0, 2.0, -1.0], 500)
-    direction = np.where(rng.random((500, 1)) < 0.5, np.nan, rng.normal(size=(500, 2)))
-    want = apply_rules(g, scale, direction)
-    for i in range(500):
-        d = (
-            None
-            if math.isnan(direction[i, 0])
-            else (float(direction[i, 0]), float(direction[i, 1]))
-        )
-        got = ruled(float(g[i, 0]), float(g[i, 1]), float(scale[i]), d)
-        assert got == (want[i, 0], want[i, 1]), i
 
 
 def _body(x: float, y: float) -> pymunk.Body:
