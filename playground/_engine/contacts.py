@@ -3,7 +3,8 @@ iteration directly, for a controller's load and touch every step.
 
 ``body.each_arbiter(f)`` makes a handle, then for every contact an ``Arbiter`` and, on
 ``arb.total_impulse``, a ``Vec2d``; a caller adding up a load also makes a closure each call:
-~0.7 µs a step even with no contact at all. :class:`Contacts` passes Chipmunk callbacks of its
+a cost paid every step even with no contact at all (docs/performance.md, contacts).
+:class:`Contacts` passes Chipmunk callbacks of its
 own, made once, that add the same terms in the same order (Chipmunk's arbiter list), so its
 answers are those of :func:`load_by_pymunk` and :func:`touching_by_pymunk`, the same sums over
 pymunk's public API (``tests/_engine/test_contacts.py`` compares them bit for bit).

@@ -2,18 +2,18 @@
 arbiters read (and forces written) through Chipmunk's C functions directly, for the per-step hot
 paths of a few bodies.
 
-A pymunk property is a Python function that calls the C getter and wraps the result: reading
-``body.velocity`` costs ~0.5 µs, of which the C call is ~0.1 µs and the rest the wrapping (a
-``Vec2d``), ``body.id`` ~0.45 µs (a cast of the user-data pointer). On a one-player level the
-controller and the tracked bodies' scalar implementation read a dozen such values a step, which
-is most of their bill.
+A pymunk property is a Python function that calls the C getter and wraps the result: most of
+reading ``body.velocity`` is the wrapping (a ``Vec2d``), and ``body.id`` is a cast of the
+user-data pointer (docs/performance.md, "The small costs", rows velocity and body_key). On a
+one-player level the controller and the tracked bodies' scalar implementation read a dozen such
+values a step, which is most of their bill.
 These functions call the same C getters and setters pymunk's properties call, so they read and
 write the very same doubles (``tests/_engine/test_raw.py`` checks them against the properties,
 bit for bit, so an upgrade of pymunk that changed its internals fails there, not in a trajectory).
 
 They take a body's *handle* (:func:`handle`, the ``cpBody*`` pymunk keeps), not the body; a
 body's arbiters are iterated with a C callback that gets the arbiter's handle (no ``Arbiter``
-object, no ``Vec2d``: ~1.5 µs for a box's two arbiters instead of ~4.5). This
+object, no ``Vec2d``; docs/performance.md, contacts). This
 reaches into pymunk's private ``_body`` and ``_chipmunk_cffi``: pymunk's major version is pinned
 (``pymunk>=7.3,<8``) for its batch API, which is experimental in the same way.
 

@@ -30,7 +30,8 @@ __all__ = ["BodyState", "body_motion", "body_state", "centre_of_gravity", "space
 @dataclass(slots=True)
 class BodyState:
     """A body's state now (a plain value; read-only by convention, not frozen: one is built
-    every control step and a frozen dataclass costs ~5× more to build).
+    every control step and a frozen dataclass is dearer to build: docs/performance.md,
+    plain_dataclass).
 
     Attributes:
         x, y: position (the origin of its own frame, in world coordinates), m.

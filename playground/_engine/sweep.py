@@ -2,10 +2,10 @@
 Chipmunk's segment query directly, for a controller's ground probe every step.
 
 ``space.segment_query`` calls back into Python for every hit and builds a ``SegmentQueryInfo``
-and two ``Vec2d`` for each, then the caller walks the list: ~2.7 µs for a probe over one floor.
-:class:`Sweep` passes Chipmunk a callback of its own that keeps only the nearest non-sensor hit
-as plain floats (~1 µs). It visits the same hits in the same order and keeps the same one (the
-strictly nearest, the first of equally near ones), so the answer is that of
+and two ``Vec2d`` for each, then the caller walks the list. :class:`Sweep` passes Chipmunk a
+callback of its own that keeps only the nearest non-sensor hit as plain floats (docs/performance.md,
+row probe, has both costs). It visits the same hits in the same order and keeps the same one
+(the strictly nearest, the first of equally near ones), so the answer is that of
 :func:`nearest_by_pymunk`, the same walk over pymunk's public query (``tests/_engine/test_sweep.py``
 compares them bit for bit). ``segment_query_first`` is not an answer: with a radius, pymunk
 7.3.1's can return a farther shape (inside a 64-segment ring it reports a neighbouring chord's

@@ -67,8 +67,8 @@ SETTLE_STEPS = 30
 """Steps a pile or a level runs before it is timed (first readings, filter state, buffers)."""
 
 STAGE_STEPS = 200
-"""Steps timed stage by stage after the blocks (``World.timings``; timing costs ~0.2 µs a
-stage)."""
+"""Steps timed stage by stage after the blocks (``World.timings``; timing adds two
+``perf_counter`` calls a stage: docs/performance.md, row stage_timer)."""
 
 
 def _stage_medians(world: World, steps: int) -> dict[str, float]:

@@ -164,8 +164,8 @@ def act(
         grip = scaled(sensed.engine, laws.grip(sensed.grip_impulse, dt / sensed.substeps))
     ground = hit if reacting else None
     reaction_torque = -torque if reacting and torque is not None else None
-    # Positionally, in the order of the fields: building one with keywords costs twice as much,
-    # and one is built every step.
+    # Positionally, in the order of the fields: building one with keywords is dearer
+    # (docs/performance.md, row positional), and one is built every step.
     return ControllerForces(
         hover, drive, grip, push, balance_torque, own, torque, ground, reactions, reaction_torque,
         take_off, pushed, short,

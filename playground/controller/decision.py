@@ -115,8 +115,8 @@ def decide(
             current = AIRBORNE
             rising = True
 
-    # Positionally, in the order of the fields: building one with keywords costs twice as much,
-    # and one is built every step.
+    # Positionally, in the order of the fields: building one with keywords is dearer
+    # (docs/performance.md, row positional), and one is built every step.
     return ControllerState(
         current, intent.jump, jump_pressed_at, grounded_at, rising, last_ground, saturated,
         still, getup_at, getup_from, grip, take_off_from, intent.gravity, intent.nullify,

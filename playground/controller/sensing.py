@@ -263,8 +263,8 @@ class Senses:
         slip = grab.slip(grip) if grip is not None and intent.grab else 0.0
         engine = world.forces(name).engine if holding else ZERO
         push_target = self.push_target(body, ground, config) if intent.push else None
-        # In the order of the fields, positionally: building one with keywords costs twice as
-        # much, and one is built every step.
+        # In the order of the fields, positionally: building one with keywords is dearer
+        # (docs/performance.md, row positional), and one is built every step.
         return Sensed(
             body, (ux, uy), world.time, wc.dt, wc.substeps, (gx, gy), perceived_up, ground,
             motion, contact_load, load, touching, last_balance_short, grip_impulse, slip,

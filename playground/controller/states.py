@@ -63,7 +63,8 @@ class ControllerState:
     """What a controller carries from one step to the next (times in s of world time).
 
     A plain value, read-only by convention: :func:`~playground.controller.decision.decide`
-    builds a new one every step (not frozen: a frozen dataclass costs ~5× more to build).
+    builds a new one every step (not frozen: a frozen dataclass is dearer to build, through
+    ``object.__setattr__`` per field; docs/performance.md, plain_dataclass).
 
     Attributes:
         state: what the state machine is doing.

@@ -68,11 +68,12 @@ class ForceLedger:
     __slots__ = ("_entries", "_on_first", "_spent")
 
     def __init__(self, on_first: Callable[[], None] | None = None) -> None:
-        # Keyed by the body object, not its id: ``body.id`` is a call into chipmunk (~0.5 µs)
-        # and a controller adds several forces a step; the ids are read once, in items().
+        # Keyed by the body object, not its id: ``body.id`` is a call into chipmunk (many times
+        # a dict lookup: docs/performance.md, body_key) and a controller adds several forces a
+        # step; the ids are read once, in items().
         self._entries: dict[pymunk.Body, _Entry] = {}
         # The entries of the last step, emptied and used again for the same bodies (a controller
-        # and a gravity rule put forces on the same bodies every step: ~0.4 µs an entry to make).
+        # and a gravity rule put forces on the same bodies every step: no new entry to build).
         self._spent: dict[pymunk.Body, _Entry] = {}
         self._on_first = on_first
 
@@ -109,7 +110,8 @@ class ForceLedger:
         if point is not None:
             cx, cy = raw.centre_of_gravity(entry.h)
             entry.torque += (point[0] - cx) * fy - (point[1] - cy) * fx
-        i = 2 * category._value_  # _value_, not value: a plain attribute, not a ~80 ns property
+        # _value_, not value: a plain attribute, not a property (docs/performance.md, enum_value).
+        i = 2 * category._value_
         entry.parts[i] += fx
         entry.parts[i + 1] += fy
 

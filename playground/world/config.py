@@ -61,7 +61,10 @@ class WorldConfig:
         doc="Split engine forces into contact and constraint readings (a batch read of "
         "every arbiter per substep).",
     )
-    timing: bool = param(False, doc="Time each stage (perf_counter calls cost ~1 µs a stage).")
+    timing: bool = param(
+        False,
+        doc="Time each stage (two perf_counter calls a stage; docs/performance.md, stage_timer).",
+    )
     guard: bool = param(
         True, doc="Stop with RunawayError when a body goes non-finite or runs away."
     )

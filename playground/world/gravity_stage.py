@@ -37,7 +37,8 @@ from playground.vec import Vec
 __all__ = ["GravityStage"]
 
 _PASSIVE = Category.PASSIVE
-"""Read once: a member read off an Enum class costs ~80 ns on CPython 3.11."""
+"""Read once: reading a member off an Enum class costs many times a global's read
+(docs/performance.md, "The small costs the code is shaped by", row enum_member)."""
 
 _DEFAULT_RULE = GravityRule()
 """The rule of a body that has none (frozen, so one instance serves every read)."""

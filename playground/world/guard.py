@@ -36,7 +36,8 @@ __all__ = [
 
 GUARD_EVERY = 256
 """Steps between checks of every body's state (about two seconds at 1/120 s): one batch read of
-every body costs ~4 µs at 10 bodies, so checked this rarely it adds < 1 % even to a 7 µs bare step.
+every body costs a fixed price close to a bare step of a small scene, so checked this rarely it
+is lost in the noise even there (docs/performance.md, "The small costs", guard_check).
 Tracked bodies' force readings are checked every step; a blow-up grows by orders of magnitude per
 step, so a body that is not tracked is caught within this many steps, before anyone reads it (only
 tracked bodies have readings and recordings, and the view clamps what it draws)."""

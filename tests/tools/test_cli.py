@@ -14,7 +14,7 @@ from tools.cli import TOOLS, parser
 ROOT = Path(__file__).resolve().parents[2]
 
 
-@pytest.mark.parametrize("tool", ["performance", "docs", "guide", "figures"])
+@pytest.mark.parametrize("tool", ["performance", "costs", "docs", "guide", "figures"])
 def test_every_generator_is_a_subcommand_with_a_function(tool: str) -> None:
     """Law: each generator parses and has the function that runs it."""
     args = parser().parse_args([tool])
@@ -22,13 +22,13 @@ def test_every_generator_is_a_subcommand_with_a_function(tool: str) -> None:
 
 
 def test_python_dash_m_tools_from_the_checkout() -> None:
-    """``python -m tools --help`` from the checkout's root lists the four generators; an unknown
+    """``python -m tools --help`` from the checkout's root lists the five generators; an unknown
     one exits 2, as argparse does."""
     done = subprocess.run(
         [sys.executable, "-m", "tools", "--help"], cwd=ROOT, capture_output=True, text=True
     )
     assert done.returncode == 0, done.stderr
-    assert "{performance,docs,guide,figures}" in done.stdout
+    assert "{performance,costs,docs,guide,figures}" in done.stdout
     bad = subprocess.run(
         [sys.executable, "-m", "tools", "nonsense"], cwd=ROOT, capture_output=True, text=True
     )

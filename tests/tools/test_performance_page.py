@@ -11,7 +11,7 @@ import pytest
 
 from playground.bench import performance
 from playground.cli import main
-from tools import cli
+from tools import cli, costs
 from tools.goals import GOALS, GoalResult
 from tools.performance_page import goals_markdown, performance_doc
 
@@ -41,11 +41,13 @@ def test_overhead_json_and_performance_page(
 
 def test_committed_page_is_generated_from_the_committed_measurement() -> None:
     """docs/performance.md is exactly what ``python -m tools performance --from
-    docs/performance.json`` writes: nobody edited a number by hand."""
+    docs/performance.json`` writes, with docs/costs.json: nobody edited a number by hand."""
     data = json.loads((ROOT / "docs" / "performance.json").read_text(encoding="utf-8"))
     m = performance.from_dict(data, source="docs/performance.json")
+    small = json.loads((ROOT / "docs" / "costs.json").read_text(encoding="utf-8"))
+    rows = costs.from_dict(small, source="docs/costs.json")
     page = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
-    assert page == performance_doc(m)
+    assert page == performance_doc(m, (rows, small))
 
 
 @pytest.mark.parametrize(

@@ -1,9 +1,10 @@
 """The scalar implementation of the tracked bodies: reverse integration and perceived gravity in
 plain floats, one body at a time, for few bodies.
 
-Every numpy call costs about 1 µs and every ``pymunk.batch`` call about 5 µs whatever the body
-count, so below :data:`SCALAR_MAX_BODIES` tracked bodies the batch implementation
-(:class:`~playground.forces.batch.BatchBodies`) costs more than the physics. This one reads each
+Every numpy call and every ``pymunk.batch`` call has a fixed price whatever the body count
+(docs/performance.md, rows numpy_call and batch_call), so below :data:`SCALAR_MAX_BODIES` tracked
+bodies the batch implementation (:class:`~playground.forces.batch.BatchBodies`) costs more than
+the physics. This one reads each
 tracked body's attributes, does the same arithmetic in the same order in Python floats and
 filters with the same 1€ (and median-of-3) equations, so both give the same readings (to a
 unit in the last place: magnitudes come from ``math.hypot`` here and from numpy's complex ``abs``
@@ -43,10 +44,10 @@ if TYPE_CHECKING:
 __all__ = ["SCALAR_MAX_BODIES", "ScalarBodies"]
 
 SCALAR_MAX_BODIES = 28
-"""Most tracked bodies the scalar implementation serves: the measured crossover. On a pile with
-every box tracked and perceived, a step served in plain floats costs 0.11× the batch one at 1
-body, 0.67× at 16, 0.97× at 28 and 1.07× at 32 (2026-12-01; it was 20 when the crossover lay
-between 16 and 24). ``playground bench overhead`` measures it again: docs/performance.md."""
+"""Most tracked bodies the scalar implementation serves: the measured crossover, where a step
+served in plain floats stops being cheaper than the batch one on a pile with every box tracked
+and perceived. ``playground bench overhead`` measures it again; docs/performance.md ("Scalar or
+batch") has the ratios."""
 
 _NAN = math.nan
 _hypot = math.hypot
