@@ -519,3 +519,32 @@ def test_the_free_body_inset_never_hides_an_actor() -> None:
     for name in ("player", "enemy"):
         assert not inset.collidepoint(screen(app, name)), name
     assert inset.collidelist([r for r in app.hud.rects if r is not inset]) < 0
+
+
+def test_spinning_ring_support_points_to_the_centre_with_no_weight_reference() -> None:
+    """spinning_ring: with the force vectors on (the level asks for them), the filtered support
+    points from the player's foot toward the ring's centre; with no gravity there is no weight
+    to compare with, so the scope draws no m·g line and the legend's scale bar is not called a
+    weight (defect: the support needed V, and "m·g (687 N)" was drawn in a zero-g level)."""
+    app = at_moment("spinning_ring")
+    f = foot(app, "player")
+    o = screen(app, "ring")
+    inward = (o[0] - f[0], o[1] - f[1])
+    assert reach(mask(app, "support_filtered"), f, inward) >= 0.8 * weight_px(app, "player")
+    assert app.scope.weight == 0.0
+    texts = [e.text for e in app.painter.legend()]
+    assert not any("m·g" in t for t in texts) and any(t.startswith("scale ") for t in texts)
+    labels = [text for kind, text, _ in app.painter.labels]
+    assert labels and not any("m·g" in t for t in labels)
+
+
+def test_incline_shows_weight_and_support_without_a_key() -> None:
+    """incline: its own overlays draw the crate's weight down and its support up, each
+    labelled with its value, besides the contact forces (defect: they needed V)."""
+    app = at_moment("incline")
+    c = screen(app, "crate")
+    w = weight_px(app, "crate")
+    assert reach(mask(app, "gravity"), c, (0.0, 1.0)) >= 0.8 * w
+    assert reach(mask(app, "support_filtered"), c, (0.0, -1.0)) >= 0.5 * w
+    kinds = {kind for kind, _, _ in app.painter.labels}
+    assert {"gravity", "support_filtered", "normal", "friction"} <= kinds
