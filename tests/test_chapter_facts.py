@@ -11,6 +11,7 @@ claim's shape: what a sentence says halves does halve, the engine is named as py
 from __future__ import annotations
 
 import itertools
+import json
 import math
 import re
 from collections.abc import Callable
@@ -37,6 +38,9 @@ own error leaves chapter 7's tangential part 2.7 % short of ω·dt/2 (the chapte
 TOL_SPRING_N = 1e-6
 """N: what the hover spring adds to the feed-forward in the spinning ring (measured 2e-8 N: the
 spring rests, the feed-forward carries the whole push)."""
+
+TOL_SAME_RUN = 1e-9
+"""Relative: one computation run twice (the bench in its own process, the chapter in this one)."""
 
 TOL_PULL = 1e-12
 """In m·g: how far below zero an impulse may read and still be no pull (round-off of a step)."""
@@ -337,3 +341,36 @@ def test_chapters_agree_on_the_critically_damped_overshoot() -> None:
         names = [n for n, _ in NUM.findall((DOCS / doc).read_text(encoding="utf-8"))]
         assert "ch8_hover_overshoot_120" in names, f"docs/{doc} does not quote it"
     assert figures.NUMBERS["ch8_hover_overshoot_120"]() > 0.0
+
+
+def estimator_table_ring() -> tuple[float, float, float]:
+    """docs/accuracy.md's estimator table, its ring row: the reverse, contact and
+    finite-difference errors as printed, %."""
+    text = (DOCS / "accuracy.md").read_text(encoding="utf-8")
+    table = text[text.index("### Force estimators") :]
+    (row,) = re.findall(r"^\| ring \| ([^|]+) \| ([^|]+) \| ([^|]+) \|$", table, re.MULTILINE)[:1]
+    reverse, contact, fd = (float(cell.strip().rstrip(" %")) for cell in row)
+    return reverse, contact, fd
+
+
+def test_estimator_table_and_chapter_7_agree_on_finite_differences() -> None:
+    """docs/accuracy.md compares finite differences with the exact force at their own centre,
+    as chapter 7 does, not at the reverse reading's mid-step half a step away: the bench's ring
+    error at 1/120 s is chapter 7's, in the committed JSON and in the printed table."""
+    from playground.bench.accuracy import Point, measure
+    from playground.bench.scenes import Knobs
+
+    chapter = figures.NUMBERS["ch7_fd_own_120"]() / 100.0
+    (measured,) = measure(Point("ring", Knobs(), "finite-difference"), ("none",), repeats=1)
+    assert abs(measured.error - chapter) <= TOL_SAME_RUN * chapter
+    rows = json.loads((DOCS / "accuracy.json").read_text(encoding="utf-8"))
+    (stored,) = [
+        r
+        for r in rows
+        if (r["scene"], r["estimator"], r["filter"]) == ("ring", "finite-difference", "none")
+        and (r["substeps"], r["iterations"]) == (1, 10)
+        and math.isclose(r["dt"], 1 / 120)
+    ]
+    assert abs(stored["error"] - chapter) <= TOL_SAME_RUN * chapter
+    printed = estimator_table_ring()[2]
+    assert abs(printed - 100.0 * chapter) <= printed_rounding(f"{printed:g}") + TOL_REL

@@ -1,13 +1,14 @@
 """The settings guide: what each knob does to what a player feels, and what it costs per frame.
 
-Every scenario (:mod:`tools.scenarios`) runs at the defaults and with each knob of
-:data:`~tools.guide_settings.KNOBS` moved, one at a time. All the runs of a scenario
-advance in lockstep, a quarter of a simulated second at a time, each timed, so a busy spell of the
-machine hits every setting alike: the cost is the median over those blocks, with the 10th and 90th
-percentiles as its spread; each block is divided by the defaults' block of the same round (paired,
-so the machine's changing load cancels) and scaled by the defaults' median. Beside it, the hover's
-error against the exact oscillator over a grid of frequencies and steps (:func:`hover_table`).
-:mod:`tools.guide_report` writes the section and the figure.
+Every scenario (:mod:`tools.scenarios`) runs at the defaults, with each knob of
+:data:`~tools.guide_settings.KNOBS` moved one at a time, and with the combinations of
+:data:`~tools.guide_settings.COMBOS` (knobs that trade one measure for another). All the
+runs of a scenario advance in lockstep, a quarter of a simulated second at a time, each timed, so a
+busy spell of the machine hits every setting alike: the cost is the median over those blocks, with
+the 10th and 90th percentiles as its spread; each block is divided by the defaults' block of the
+same round (paired, so the machine's changing load cancels) and scaled by the defaults' median.
+Beside it, the hover's error against the exact oscillator over a grid of frequencies and steps
+(:func:`hover_table`). :mod:`tools.guide_report` writes the section and the figure.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from tools.guide_settings import KNOBS, Knob, Run
+from tools.guide_settings import COMBOS, KNOBS, Combo, Knob, Run
 from tools.scenarios import SCENARIOS, build_with
 
 __all__ = [
@@ -49,25 +50,32 @@ class _Live:
     blocks: list[float]
 
 
-def _settings() -> list[tuple[Knob | None, float | bool]]:
-    out: list[tuple[Knob | None, float | bool]] = [(None, 0.0)]
+Setting = tuple[Knob | Combo | None, float | bool]
+"""A knob and its value, or a combination of knobs (its value unused), or (None, 0.0): the
+defaults."""
+
+
+def _settings() -> list[Setting]:
+    out: list[Setting] = [(None, 0.0)]
     for knob in KNOBS:
         out += [(knob, v) for v in knob.values[1:]]
+    out += [(combo, math.nan) for combo in COMBOS]
     return out
 
 
-def run_scenario(
-    name: str, settings: Sequence[tuple[Knob | None, float | bool]] | None = None
-) -> list[Run]:
-    """Run scenario ``name`` at every setting (default: the defaults and each knob's other
-    values), all in lockstep, and return one :class:`Run` each. The first setting is the
-    reference the costs are paired with."""
+def run_scenario(name: str, settings: Sequence[Setting] | None = None) -> list[Run]:
+    """Run scenario ``name`` at every setting (default: the defaults, each knob's other values
+    and the combinations of :data:`COMBOS`), all in lockstep, and return one :class:`Run` each.
+    The first setting is the reference the costs are paired with."""
     make, observe, measures = SCENARIOS[name]
     base = make()
     live = []
     for knob, value in settings if settings is not None else _settings():
         scene = build_with(base, knob, value)
-        live.append(_Live("defaults" if knob is None else knob.name, value, scene, {}, []))
+        if isinstance(knob, Combo):
+            live.append(_Live(knob.name, math.nan, scene, {}, []))
+        else:
+            live.append(_Live("defaults" if knob is None else knob.name, value, scene, {}, []))
     seconds = base.settings.seconds
     rounds = math.ceil(seconds / BLOCK - 1e-9)
     for r in range(rounds):

@@ -15,10 +15,19 @@ import numpy as np
 from playground.bench.markdown import table
 from playground.bench.plots import pyplot, save
 from tools.guide import BLOCK, HOVER_DTS, HOVER_FREQUENCIES
-from tools.guide_settings import KNOBS, THRESHOLDS, Run, value_text
+from tools.guide_settings import COMBOS, KNOBS, THRESHOLDS, Run, value_text
 from tools.scenarios import DROP, RUN_SPEED, SCENARIOS
 
-__all__ = ["COST_TIE", "advice", "front", "guide_figure", "guide_markdown", "worst_case"]
+__all__ = [
+    "COST_TIE",
+    "WANTS",
+    "advice",
+    "front",
+    "guide_figure",
+    "guide_markdown",
+    "misses",
+    "worst_case",
+]
 
 
 COST_TIE = 0.1
@@ -69,18 +78,40 @@ def worst_case(runs: Sequence[Run]) -> list[tuple[str, float, float]]:
     return out
 
 
+WANTS = {
+    "drift": "the player to stay put on an accelerating platform (drift under {t} {u})",
+    "shake": "a camera that does not shake where nothing turns (perceived up under {t} {u} RMS)",
+    "ring up": "a steady camera in a spinning room (perceived up within {t} {u})",
+    "room up": "the camera to follow a turning room (within {t} {u})",
+    "landing tilt": "running landings that stay upright (tilt under {t} {u})",
+    "penetration": "feet that never sink into the floor (under {t} {u})",
+}
+"""What a player wants, per measure of :data:`THRESHOLDS` (``t`` and ``u``: its threshold)."""
+
+
+def _breaks(runs: Sequence[Run], label: str) -> list[str]:
+    """The measures over their thresholds in any scenario at setting ``label``: "shake 15.9 °/s"."""
+    return [
+        f"{m} {r.measures[m]:.3g} {THRESHOLDS[m][1]}"
+        for r in runs
+        if r.label == label
+        for m in r.measures
+        if math.isfinite(r.measures[m]) and r.measures[m] >= THRESHOLDS[m][0]
+    ]
+
+
+def _but(runs: Sequence[Run], label: str, measure: str) -> str:
+    """ ", but shake 15.9 °/s" when setting ``label`` breaks another measure, else ""."""
+    others = [b for b in _breaks(runs, label) if not b.startswith(f"{measure} ")]
+    return f"; but {', '.join(others)}" if others else ""
+
+
 def advice(runs: Sequence[Run]) -> list[tuple[str, str]]:
-    """The "if you want X, set Y" rows: for each measure, the cheapest tried setting that keeps
-    it under its threshold (or the best one, if none does), read off the runs."""
+    """The "if you want X, set Y" rows: for each measure, the cheapest tried setting (one knob or
+    a combination) that keeps it under its threshold, or the best one if none does, and what that
+    setting breaks elsewhere, read off the runs."""
     rows = []
-    wants = {
-        "drift": "the player to stay put on an accelerating platform (drift under {t} {u})",
-        "ring up": "a steady camera in a spinning room (perceived up within {t} {u})",
-        "room up": "the camera to follow a turning room (within {t} {u})",
-        "landing tilt": "running landings that stay upright (tilt under {t} {u})",
-        "penetration": "feet that never sink into the floor (under {t} {u})",
-    }
-    for measure, text in wants.items():
+    for measure, text in WANTS.items():
         limit, unit = THRESHOLDS[measure]
         cands = [r for r in runs if measure in r.measures and math.isfinite(r.measures[measure])]
         if not cands:
@@ -91,20 +122,49 @@ def advice(runs: Sequence[Run]) -> list[tuple[str, str]]:
             y = f"the defaults ({base.measures[measure]:.3g} {unit})"
         elif ok:
             best = min(ok, key=lambda r: r.frame_share)
+            missed = f"the defaults miss ({base.measures[measure]:.3g} {unit}): " if base else ""
             y = (
-                f"{best.label} ({best.measures[measure]:.3g} {unit}, "
-                f"{100 * best.frame_share:.1f} % of a 60 Hz frame)"
+                f"{missed}{best.label} ({best.measures[measure]:.3g} {unit}, "
+                f"{100 * best.frame_share:.1f} % of a 60 Hz frame"
+                + _but(runs, best.label, measure)
+                + ")"
             )
         else:
             best = min(cands, key=lambda r: r.measures[measure])
             y = (
-                f"no single knob tried gets there; the best is {best.label} "
+                f"no setting tried gets there; the best is {best.label} "
                 f"({best.measures[measure]:.3g} {unit}"
                 + (f", defaults {base.measures[measure]:.3g}" if base is not None else "")
+                + _but(runs, best.label, measure)
                 + ")"
             )
         rows.append((text.format(t=f"{limit:g}", u=unit), y))
     return rows
+
+
+def misses(runs: Sequence[Run]) -> list[str]:
+    """Where the defaults miss a threshold: one sentence each, with what to change (the
+    cheapest setting tried that meets it) and what that change costs on the other measures."""
+    out = []
+    for r in runs:
+        if r.knob != "defaults":
+            continue
+        for m, v in r.measures.items():
+            limit, unit = THRESHOLDS[m]
+            if not math.isfinite(v) or v < limit:
+                continue
+            ok = [c for c in runs if m in c.measures and c.measures[m] < limit]
+            if ok:
+                best = min(ok, key=lambda c: c.frame_share)
+                fix = f"{best.label} gets it to {best.measures[m]:.3g} {unit}" + (
+                    f", at the price of {', '.join(others)}"
+                    if (others := [b for b in _breaks(runs, best.label) if not b.startswith(m)])
+                    else ", and breaks nothing else tried"
+                )
+            else:
+                fix = "no setting tried gets there"
+            out.append(f"- **{r.scenario}, {m}**: {v:.3g} {unit} against {limit:g} {unit}; {fix}.")
+    return out
 
 
 def guide_markdown(
@@ -157,19 +217,30 @@ def guide_markdown(
         hover_rows.append(f"| {f:g} Hz | " + " | ".join(cells) + " |")
     hover_head = "| f \\ dt | " + " | ".join(f"1/{round(1 / dt)} s" for dt in HOVER_DTS) + " |"
     thresholds = ", ".join(f"{m} {t:g} {u}" for m, (t, u) in THRESHOLDS.items())
+    combo_text = "; ".join(f"`{c.name}`" for c in COMBOS)
+    miss_lines = misses(runs)
     return f"""## The settings guide (`python -m tools guide`)
 
 Four game-felt scenarios, each a shipped level run with the real controller (module
-`tools.guide`): **platform** (moving_platform: drift relative to the platform, cm),
+`tools.guide`): **platform** (moving_platform: drift relative to the platform, cm,
+and *shake*, the RMS rate at which the perceived up turns once settled, °/s: nothing turns there,
+so all of it is the filter's jitter, which the lag measures below cannot see),
 **ring** (spinning_ring: RMS angle between the perceived up and the exact one once settled, °),
 **room** (rotating_room: largest angle between perceived gravity and the field while it turns, °),
 **landing** (rest, the player dropped {DROP:g} m with {RUN_SPEED:g} m/s sideways: largest tilt
 after touchdown, °, and deepest overlap with the ground, mm). Fifteen knobs, each moved one at a
-time from the defaults ({len(runs)} runs, {seconds:.0f} s on this machine):
+time from the defaults, and {len(COMBOS)} combinations of knobs that trade one measure for another
+({len(runs)} runs, {seconds:.0f} s on this machine):
 
 | knob | what | values tried (default first) | unit |
 |---|---|---|---|
 {knob_lines}
+
+Combinations: {combo_text}.
+
+### Where the defaults miss
+
+{chr(10).join(miss_lines) if miss_lines else "Nowhere: the defaults meet every threshold."}
 
 Cost: all the runs of a scenario advance in lockstep, {BLOCK:g} s of simulated time at a time,
 each block timed, so a busy spell of the machine hits every setting alike; the table gives the
@@ -209,7 +280,7 @@ def guide_figure(runs: Sequence[Run], path: Path) -> None:
     """Each scenario's measures against the frame share, fronts marked; and the worst case."""
     plt = pyplot()
     panels = [(n, m) for n, (_, _, ms) in SCENARIOS.items() for m in ms]
-    fig, axes = plt.subplots(2, 3, figsize=(15, 8.5))
+    fig, axes = plt.subplots(2, 4, figsize=(19, 8.5))
     flat = list(axes.flat)
     for ax, (name, m) in zip(flat, panels, strict=False):
         rs = [r for r in runs if r.scenario == name]

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["FRAME", "KNOBS", "THRESHOLDS", "Knob", "Run", "value_text"]
+__all__ = ["COMBOS", "FRAME", "KNOBS", "THRESHOLDS", "Combo", "Knob", "Run", "value_text"]
 
 FRAME = 1.0 / 60.0
 """s: the display frame the cost is compared with (60 Hz)."""
@@ -53,25 +53,52 @@ KNOBS: tuple[Knob, ...] = (
 """The knobs, each with its default first."""
 
 
+@dataclass(frozen=True, slots=True)
+class Combo:
+    """Several knobs of :data:`KNOBS` moved together from the defaults: (knob name, value) each."""
+
+    moves: tuple[tuple[str, float | bool], ...]
+
+    @property
+    def name(self) -> str:
+        """The setting as the tables print it: ``min_cutoff = 5, beta = 0.2``."""
+        return ", ".join(f"{k} = {value_text(v)}" for k, v in self.moves)
+
+
+COMBOS: tuple[Combo, ...] = (
+    Combo((("min_cutoff", 1.0), ("beta", 0.0))),
+    Combo((("min_cutoff", 1.0), ("beta", 0.2))),
+    Combo((("min_cutoff", 1.0), ("beta", 0.5))),
+    Combo((("min_cutoff", 5.0), ("beta", 0.2))),
+    Combo((("spike_filter", False), ("beta", 0.2))),
+    Combo((("dt", 1 / 240), ("beta", 0.2))),
+)
+"""Knobs moved together: the filter's two against each other (the camera's lag in the ring and
+room against its shake on the platform), and β with the step or without the spike stage."""
+
+
 THRESHOLDS: dict[str, tuple[float, str]] = {
     "drift": (1.0, "cm"),
+    "shake": (10.0, "°/s"),
     "ring up": (2.0, "°"),
     "room up": (2.0, "°"),
     "landing tilt": (5.0, "°"),
     "penetration": (5.0, "mm"),
 }
-"""What a player notices, per measure: a centimetre of sliding on a platform; the camera's roll
-off by two degrees (the ring, the room); a
+"""What a player notices, per measure: a centimetre of sliding on a platform; the camera rolling
+back and forth by 10 °/s RMS where nothing turns (a sixth of a degree per 60 Hz frame; the
+rotating room's real turn is 14 °/s); the camera's roll off by two degrees (the ring, the room); a
 landing that tips the body by five degrees; feet five millimetres inside the floor (the
 default slop is 5 mm: more is visible overlap). A setting is "good" below all of them."""
 
 
 @dataclass(frozen=True, slots=True)
 class Run:
-    """One scenario run at one setting (one knob moved from the defaults).
+    """One scenario run at one setting (one knob moved from the defaults, or a :class:`Combo`).
 
     Attributes:
-        scenario: its name.  knob: the knob moved ("defaults" for none).  value: its value.
+        scenario: its name.  knob: the knob moved ("defaults" for none; a combination's
+            :attr:`Combo.name`).  value: its value (NaN for a combination).
         measures: measure name → value, in the units of :data:`THRESHOLDS`.
         cost_us: µs per step, median over blocks.  cost_lo, cost_hi: 10th and 90th percentiles.
         dt: the step, s.
@@ -93,7 +120,14 @@ class Run:
 
     @property
     def label(self) -> str:
-        return "defaults" if self.knob == "defaults" else f"{self.knob} = {value_text(self.value)}"
+        if self.knob == "defaults" or self.combined:
+            return self.knob
+        return f"{self.knob} = {value_text(self.value)}"
+
+    @property
+    def combined(self) -> bool:
+        """The run moved several knobs together (a :class:`Combo`)."""
+        return isinstance(self.value, float) and math.isnan(self.value)
 
 
 def value_text(v: float | bool) -> str:

@@ -2,7 +2,8 @@
 and observed after every step:
 
 * **platform** (moving_platform): how far the player drifts relative to a platform that speeds up
-  at 1 m/s², cm;
+  at 1 m/s², cm, and how much its perceived up shakes (the RMS rate at which it turns once the
+  filter has settled, °/s: nothing turns there, so every degree is the filter's jitter);
 * **ring** (spinning_ring): the angle between the perceived up and the exact one (away from the
   ring's floor, along the radius through the player's centre), RMS once settled, degrees;
 * **room** (rotating_room): the largest angle between the perceived gravity and the field while
@@ -10,7 +11,8 @@ and observed after every step:
 * **landing** (rest, dropped from 1 m): the largest tilt after touchdown, degrees, and the deepest
   overlap of the capsule with the ground, mm.
 
-:func:`build_with` builds a scenario's level with one knob moved from the defaults.
+:func:`build_with` builds a scenario's level with one knob (or a combination) moved from the
+defaults.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ from collections.abc import Callable
 from typing import Any
 
 from playground.level.document import Level
-from tools.guide_settings import Knob
+from tools.guide_settings import KNOBS, Combo, Knob
 
 __all__ = ["DROP", "RUN_SPEED", "SCENARIOS", "build_with"]
 
@@ -83,11 +85,28 @@ def _platform_level() -> Level:
     return _level("moving_platform")
 
 
+SHAKE_FROM = 1.0
+"""s: the platform's shake is measured from here on (the filter has settled)."""
+
+
+def _signed_angle(a: tuple[float, float], b: tuple[float, float]) -> float:
+    """Angle from ``b`` to ``a``, degrees, counter-clockwise positive."""
+    return math.degrees(math.atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]))
+
+
 def _platform_observe(scene: Any, s: dict[str, float]) -> None:
     w = scene.world
     rel = w.body("player").position.x - w.body("platform").position.x
     s.setdefault("start", rel)
     s["drift"] = max(s.get("drift", 0.0), 100.0 * abs(rel - s["start"]))
+    # Shake: how fast the perceived up (the camera's roll) turns, RMS, where nothing turns.
+    ux, uy = w.perceived_up("player")
+    if w.time > SHAKE_FROM and "up x" in s:
+        rate = _signed_angle((ux, uy), (s["up x"], s["up y"])) / w.config.dt
+        s["shake sum"] = s.get("shake sum", 0.0) + rate * rate
+        s["shake n"] = s.get("shake n", 0.0) + 1.0
+        s["shake"] = math.sqrt(s["shake sum"] / s["shake n"])
+    s["up x"], s["up y"] = ux, uy
 
 
 RING_SECONDS = 4.0
@@ -158,7 +177,7 @@ def _landing_observe(scene: Any, s: dict[str, float]) -> None:
 SCENARIOS: dict[
     str, tuple[Callable[[], Level], Callable[[Any, dict[str, float]], None], tuple[str, ...]]
 ] = {
-    "platform": (_platform_level, _platform_observe, ("drift",)),
+    "platform": (_platform_level, _platform_observe, ("drift", "shake")),
     "ring": (_ring_level, _ring_observe, ("ring up",)),
     "room": (_room_level, _room_observe, ("room up",)),
     "landing": (_landing_level, _landing_observe, ("landing tilt", "penetration")),
@@ -166,12 +185,22 @@ SCENARIOS: dict[
 """Scenario name → (its level, what it observes after every step, the measures it reports)."""
 
 
-def build_with(level: Level, knob: Knob | None, value: float | bool) -> Any:
-    """Build ``level`` as a scene with ``knob`` set to ``value`` (None: the defaults)."""
+def build_with(level: Level, knob: Knob | Combo | None, value: float | bool) -> Any:
+    """Build ``level`` as a scene with ``knob`` set to ``value`` (None: the defaults; a
+    :class:`Combo`: each of its knobs set, ``value`` unused)."""
     from playground.scene import build
 
-    scene = build(_with(level, knob, value))
-    if knob is not None and knob.where == "world":
-        # The only world knob: sleeping, which the level format does not carry.
-        scene.world.config = dataclasses.replace(scene.world.config, sleep_time=float(value))
+    moves: list[tuple[Knob, float | bool]]
+    if isinstance(knob, Combo):
+        by_name = {k.name: k for k in KNOBS}
+        moves = [(by_name[name], v) for name, v in knob.moves]
+    else:
+        moves = [] if knob is None else [(knob, value)]
+    for k, v in moves:
+        level = _with(level, k, v)
+    scene = build(level)
+    for k, v in moves:
+        if k.where == "world":
+            # The only world knob: sleeping, which the level format does not carry.
+            scene.world.config = dataclasses.replace(scene.world.config, sleep_time=float(v))
     return scene

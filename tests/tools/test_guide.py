@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from tools import guide
-from tools.guide_settings import KNOBS, Knob
+from tools.guide_settings import COMBOS, KNOBS, Combo, Knob
 
 TOL_DRIFT_RATIO = 0.05
 """Relative: drift is a·τ·T for the drive's first-order lag, so doubling τ doubles it; the lag's
@@ -38,3 +38,19 @@ def test_hover_error_is_first_order_and_refused_beyond_the_limit() -> None:
     fine = guide.hover_error(5.0, 1.0, 1 / 120)
     assert 1.8 < coarse / fine < 2.2
     assert math.isinf(guide.hover_error(40.0, 1.0, 1 / 30))
+
+
+def test_beta_buys_lag_with_shake_and_a_combination_moves_every_knob_it_names() -> None:
+    """Law: raising β opens the 1€ cutoff on noise as on real turns, so the platform's camera
+    shakes more (the jitter the lag measures cannot see); a combination of knobs is one run,
+    labelled with all of them, and moves each (min_cutoff = 1 with β = 0 is steadier than either
+    alone)."""
+    steady = next(c for c in COMBOS if c.moves == (("min_cutoff", 1.0), ("beta", 0.0)))
+    base, quick, calm, both = guide.run_scenario(
+        "platform",
+        [(None, 0.0), (_knob("beta"), 0.5), (_knob("beta"), 0.0), (steady, math.nan)],
+    )
+    assert quick.measures["shake"] > base.measures["shake"] > calm.measures["shake"]
+    assert both.label == "min_cutoff = 1, beta = 0" and both.combined
+    assert both.measures["shake"] < calm.measures["shake"]
+    assert isinstance(steady, Combo)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from tools.guide_report import advice, front
+from tools.guide_report import advice, front, misses
 from tools.guide_settings import THRESHOLDS, Run
 
 
@@ -26,9 +26,25 @@ def test_advice_names_the_defaults_when_they_suffice_and_the_cheapest_fix_otherw
             _run({"drift": 0.4 * limit}, "dt", 900.0),
         ]
     )
-    assert fixed[0][1].startswith("drive_time")
+    assert fixed[0][1].startswith("the defaults miss") and "drive_time" in fixed[0][1]
     none = advice([_run({"drift": 3 * limit}), _run({"drift": 2 * limit}, "dt")])
-    assert "no single knob" in none[0][1] and "dt" in none[0][1]
+    assert "no setting tried" in none[0][1] and "dt" in none[0][1]
+
+
+def test_advice_and_misses_say_what_the_fix_breaks() -> None:
+    """Law: where the defaults miss a threshold, the fix is named with the other measures it
+    pushes over theirs (raising β cuts the ring's lag and shakes the platform's camera)."""
+    up, shake = THRESHOLDS["ring up"][0], THRESHOLDS["shake"][0]
+    runs = [
+        Run("ring", "defaults", 0.0, {"ring up": 2 * up}, 100.0, 100.0, 100.0, 1 / 120),
+        Run("platform", "defaults", 0.0, {"shake": 0.5 * shake}, 100.0, 100.0, 100.0, 1 / 120),
+        Run("ring", "beta", 0.5, {"ring up": 0.5 * up}, 100.0, 100.0, 100.0, 1 / 120),
+        Run("platform", "beta", 0.5, {"shake": 2 * shake}, 100.0, 100.0, 100.0, 1 / 120),
+    ]
+    (row,) = [y for x, y in advice(runs) if "spinning room" in x]
+    assert "beta = 0.5" in row and "but shake" in row
+    (line,) = misses(runs)
+    assert "ring, ring up" in line and "at the price of shake" in line
 
 
 @pytest.mark.parametrize("tie", [0.0, 0.1])
