@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 from functools import cache, partial
 from pathlib import Path
 
@@ -51,17 +52,46 @@ NOISE = 0.5
 """Standard deviation of the synthetic reading's noise at rest, m/s²."""
 
 
+SEED = 7
+"""The noise draw behind the figure's single-draw curves and the numbers quoted "on one draw"."""
+
+SEEDS = 100
+"""Noise draws (seeds 0 … SEEDS − 1) over which chapter 4 quotes a jitter's median and range and
+runs the tuning's first step: one draw's jitter moves by tens of percent from seed to seed."""
+
+
 @cache
-def _noisy_rest() -> Array:
+def _noisy_rest(seed: int = SEED) -> Array:
     """Two seconds of a resting reading g plus seeded Gaussian noise, m/s²."""
-    rng = np.random.default_rng(7)
+    rng = np.random.default_rng(seed)
     return G + NOISE * rng.standard_normal(round(2.0 / DT))
 
 
-def jitter(make: Callable[[], Filter] | None) -> float:
+def jitter(make: Callable[[], Filter] | None, seed: int = SEED) -> float:
     """Spread (standard deviation) of the filtered noisy rest signal after 1 s, m/s²."""
-    out = _filtered(make, _noisy_rest(), DT)
+    out = _filtered(make, _noisy_rest(seed), DT)
     return float(np.std(out[round(1.0 / DT) :]))
+
+
+@dataclass(frozen=True, slots=True)
+class Spread:
+    """A measure over the :data:`SEEDS` noise draws: its median, lowest and highest value."""
+
+    median: float
+    low: float
+    high: float
+
+
+def jitter_spread(make: Callable[[], Filter] | None) -> Spread:
+    """The jitter of ``make``'s filter over :data:`SEEDS` noise draws, m/s²."""
+    values = [jitter(make, seed) for seed in range(SEEDS)]
+    return Spread(float(np.median(values)), min(values), max(values))
+
+
+@cache
+def filter_spread(label: str) -> Spread:
+    """:func:`jitter_spread` of the filter of :data:`CH4_FILTERS` named ``label``."""
+    return jitter_spread(CH4_FILTERS[label])
 
 
 def lag(make: Callable[[], Filter] | None) -> float:
@@ -84,14 +114,38 @@ LAG_TARGET = 0.05
 """s: "stops lagging" — three steps at 60 fps."""
 
 
+def first_step(seed: int = SEED) -> float:
+    """The tuning's first step on one noise draw: the first ``min_cutoff`` of the ladder (β = 0)
+    whose jitter is below :data:`JITTER_TARGET` (the last rung if none is), Hz."""
+    for fc in TUNE_CUTOFFS:
+        if jitter(partial(OneEuroFilter, min_cutoff=fc), seed) < JITTER_TARGET:
+            return fc
+    return TUNE_CUTOFFS[-1]
+
+
+@cache
+def first_step_picks() -> dict[float, int]:
+    """How many of the :data:`SEEDS` noise draws the first step ends on each rung of the ladder."""
+    picks = dict.fromkeys(TUNE_CUTOFFS, 0)
+    for seed in range(SEEDS):
+        picks[first_step(seed)] += 1
+    return picks
+
+
+@cache
+def ladder_spread() -> list[tuple[float, Spread]]:
+    """The first step's ladder over every noise draw: (min_cutoff, jitter spread at β = 0)."""
+    return [(fc, jitter_spread(partial(OneEuroFilter, min_cutoff=fc))) for fc in TUNE_CUTOFFS]
+
+
 @cache
 def tuning() -> tuple[list[tuple[float, float]], float, list[tuple[float, float]], float]:
-    """The tuning procedure on the synthetic signal.
+    """The tuning procedure on one noise draw (:data:`SEED`).
 
     Returns ([(min_cutoff, jitter)], chosen min_cutoff, [(β, lag)], chosen β).
     """
     steps = [(fc, jitter(partial(OneEuroFilter, min_cutoff=fc))) for fc in TUNE_CUTOFFS]
-    chosen = next((fc for fc, j in steps if j < JITTER_TARGET), TUNE_CUTOFFS[-1])
+    chosen = first_step()
     betas = [(b, lag(partial(OneEuroFilter, min_cutoff=chosen, beta=b))) for b in TUNE_BETAS]
     beta = next((b for b, d in betas if d < LAG_TARGET), TUNE_BETAS[-1])
     return steps, chosen, betas, beta
@@ -124,6 +178,86 @@ def ch4_jitter_ema() -> float:
 def ch4_jitter_euro() -> float:
     """Jitter at rest through perception's 1€ filter (2 Hz, β 0.05), m/s²."""
     return jitter(CH4_FILTERS["1€ 2 Hz, β 0.05"])
+
+
+@number
+def ch4_jitter_euro_median() -> float:
+    """Median jitter of perception's 1€ filter over the noise draws, m/s²."""
+    return filter_spread("1€ 2 Hz, β 0.05").median
+
+
+@number
+def ch4_jitter_euro_low() -> float:
+    """Lowest jitter of perception's 1€ filter over the noise draws, m/s²."""
+    return filter_spread("1€ 2 Hz, β 0.05").low
+
+
+@number
+def ch4_jitter_euro_high() -> float:
+    """Highest jitter of perception's 1€ filter over the noise draws, m/s²."""
+    return filter_spread("1€ 2 Hz, β 0.05").high
+
+
+@number
+def ch4_jitter_euro_over_target() -> float:
+    """On how many noise draws perception's 1€ filter jitters more than the target."""
+    make = CH4_FILTERS["1€ 2 Hz, β 0.05"]
+    return float(sum(jitter(make, seed) > JITTER_TARGET for seed in range(SEEDS)))
+
+
+@number
+def ch4_jitter_ema_median() -> float:
+    """Median jitter of the 5 Hz moving average over the noise draws, m/s²."""
+    return filter_spread("moving average 5 Hz").median
+
+
+@number
+def ch4_jitter_ema_low() -> float:
+    """Lowest jitter of the 5 Hz moving average over the noise draws, m/s²."""
+    return filter_spread("moving average 5 Hz").low
+
+
+@number
+def ch4_jitter_ema_high() -> float:
+    """Highest jitter of the 5 Hz moving average over the noise draws, m/s²."""
+    return filter_spread("moving average 5 Hz").high
+
+
+@number
+def ch4_seeds() -> float:
+    """How many noise draws chapter 4's medians and ranges are taken over."""
+    return float(SEEDS)
+
+
+@number
+def ch4_picks_2() -> float:
+    """Noise draws on which the tuning's first step picks 2 Hz."""
+    return float(first_step_picks()[2.0])
+
+
+@number
+def ch4_picks_1() -> float:
+    """Noise draws on which the tuning's first step picks 1 Hz."""
+    return float(first_step_picks()[1.0])
+
+
+@number
+def ch4_picks_other() -> float:
+    """Noise draws on which the tuning's first step picks neither 2 Hz nor 1 Hz."""
+    picks = first_step_picks()
+    return float(SEEDS - picks[2.0] - picks[1.0])
+
+
+@number
+def ch4_jitter_1hz_median() -> float:
+    """Median jitter of the 1€ filter at 1 Hz, β 0.05 (the steadier rung) over the draws, m/s²."""
+    return jitter_spread(partial(OneEuroFilter, min_cutoff=1.0, beta=0.05)).median
+
+
+@number
+def ch4_jitter_2hz_beta0_median() -> float:
+    """Median jitter of the 1€ filter at 2 Hz, β = 0 over the noise draws, m/s²."""
+    return jitter_spread(partial(OneEuroFilter, min_cutoff=2.0, beta=0.0)).median
 
 
 @number
@@ -237,7 +371,17 @@ def fig_ch4(path: Path) -> Path:
     a.set_ylabel("felt force / mass (m/s²)")
     a.set_title("bounce: ball1 (raw spikes reach thousands of m/s²; clipped)")
     a.legend(fontsize=8, ncol=2)
-    b.plot([fc for fc, _ in steps], [j for _, j in steps], "o-")
+    spread = ladder_spread()
+    b.fill_between(
+        [fc for fc, _ in spread],
+        [sp.low for _, sp in spread],
+        [sp.high for _, sp in spread],
+        color="C0",
+        alpha=0.15,
+        label=f"range over {SEEDS} noise draws",
+    )
+    b.plot([fc for fc, _ in spread], [sp.median for _, sp in spread], "C0--", label="median")
+    b.plot([fc for fc, _ in steps], [j for _, j in steps], "o-", label=f"one draw (seed {SEED})")
     b.axhline(JITTER_TARGET, color="k", ls="--", lw=1, label="jitter target")
     b.set_xscale("log")
     b.set_xticks(TUNE_CUTOFFS, [f"{v:g}" for v in TUNE_CUTOFFS])
