@@ -67,6 +67,9 @@ def _estimator_text(rows: Sequence[Result], f: Findings) -> str:
 FD_WORSE = 1.5
 """Finite differences' error over reverse integration's above which the page names the scene."""
 
+ROUND_OFF = 1e-9
+"""A relative error below this is round-off (the rest scene's 1e-16), not worth naming."""
+
 
 def _fd_worse(rows: Sequence[Result]) -> str:
     """ ", worse on the hover (1.5 % against 0.74 %)" for the scenes where finite differences err
@@ -75,7 +78,7 @@ def _fd_worse(rows: Sequence[Result]) -> str:
     worse = [
         f"the {sc} ({pct(fd[sc].error)} against {pct(rev[sc].error)})"
         for sc in fd
-        if sc in rev and fd[sc].error > FD_WORSE * rev[sc].error and sc != "landing"
+        if sc in rev and fd[sc].error > max(FD_WORSE * rev[sc].error, ROUND_OFF) and sc != "landing"
     ]
     return f"; they are worse on {', '.join(worse)}" if worse else ""
 
