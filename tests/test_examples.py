@@ -3,6 +3,7 @@ only the public API."""
 
 from __future__ import annotations
 
+import ast
 import importlib.util
 import itertools
 import math
@@ -146,3 +147,23 @@ def test_the_lesson_sandbox_feels_weight_standing_nothing_in_the_air_and_a_landi
     assert all(f < TOL_FELT_N for f in airborne)  # free fall: it feels no gravity
     assert max(felt[100:140]) > 2 * weight  # the landing
     assert all(abs(f - weight) < TOL_FELT_N for f in felt[200:])  # standing again
+
+
+def _public_names_used() -> set[str]:
+    """The names the examples import from ``playground``."""
+    names: set[str] = set()
+    for path in EXAMPLES.glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.module == "playground":
+                names |= {alias.name for alias in node.names}
+    return names
+
+
+def test_every_public_name_an_example_uses_has_a_runnable_example() -> None:
+    """Law: each class or function the examples import has a doctest in its own docstring."""
+    import playground
+
+    used = _public_names_used()
+    assert {"Controller", "World", "FixedStep"} <= used
+    missing = [n for n in sorted(used) if ">>>" not in (getattr(playground, n).__doc__ or "")]
+    assert not missing, missing

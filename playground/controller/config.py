@@ -41,6 +41,16 @@ class ControllerConfig:
     2πf·dt < :func:`hover_limit` (ζ), which is at least 2. Beyond ``hover_force`` the capsule
     bottoms out and the contact takes the rest (a hard landing, a crushing load). The drive is
     also bounded by ``traction`` × the hover force (no normal force, no traction).
+
+    Change what a game needs and keep the rest; every key is checked, naming the key:
+
+    >>> hopper = ControllerConfig(jump_speed=6.0, max_speed=5.0)      # m/s, m/s
+    >>> round(hopper.jump_speed**2 / (2 * 9.81), 2)                    # m: its jump's height
+    1.83
+    >>> ControllerConfig(mass=-1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: mass: expected a number in [0.001, 1e+06] kg, got -1.0
     """
 
     mass: float = param(70.0, doc="Mass when built.", unit="kg", ge=MIN_MASS, le=MAX_MASS)

@@ -80,6 +80,25 @@ class Controller:
     Each step (:meth:`step`, the CONTROL stage's hook) is ``sense`` (:class:`Senses`) →
     ``decide`` → ``act`` through :attr:`laws`; its results are the public readings below
     (:attr:`sensed`, :attr:`control_state`, :attr:`last_forces`, :attr:`transition`).
+
+    Arguments: the ``world``, the body's ``name``, its start ``position`` (m) and ``angle``
+    (rad); ``config`` (default ``ControllerConfig()``: a 70 kg, 1.8 m capsule); ``source``, what
+    it wants each step (default: nothing but :attr:`intent`); ``laws`` (default ``Laws()``).
+
+    In a game, set :attr:`intent` every frame (the per-frame input) and read :attr:`state`,
+    :attr:`grounded`, :attr:`up`, :attr:`tilt`, :attr:`ground_velocity` and :attr:`felt` to
+    animate it:
+
+    >>> from playground import Intent, World
+    >>> world = World()
+    >>> floor = world.add_static_segment((-50.0, 0.0), (50.0, 0.0))
+    >>> player = Controller(world, "player", position=(0.0, 0.95))
+    >>> player.intent = Intent(move=1.0)          # held: walk right
+    >>> world.run(1.0)                            # s
+    >>> player.grounded, round(player.body.velocity.x, 2)     # m/s: its top speed
+    (True, 4.0)
+    >>> round(player.felt[1], 1), player.ground_velocity      # N: its weight; m/s: still ground
+    (686.7, (0.0, 0.0))
     """
 
     def __init__(
@@ -87,11 +106,14 @@ class Controller:
         world: World,
         name: str,
         position: tuple[float, float],
-        config: ControllerConfig = DEFAULT_CONFIG,
+        config: ControllerConfig | None = None,
         source: IntentSource | None = None,
         angle: float = 0.0,
-        laws: Laws = DEFAULT_LAWS,
+        laws: Laws | None = None,
     ) -> None:
+        # None stands for the defaults, so the signature (help(Controller)) stays one line.
+        config = DEFAULT_CONFIG if config is None else config
+        laws = DEFAULT_LAWS if laws is None else laws
         if not isinstance(config, ControllerConfig):
             raise ValueError(f"config: expected a ControllerConfig, got {config!r}")
         if not isinstance(laws, Laws):
@@ -165,8 +187,28 @@ class Controller:
 
     @property
     def state(self) -> State:
-        """What the state machine is doing (``control_state.state``)."""
+        """What the state machine is doing (``control_state.state``): GROUNDED, AIRBORNE,
+        HANGING, OFF_BALANCE, GETTING_UP or CRUSHED; :attr:`transition` says when it changed."""
         return self.control_state.state
+
+    @property
+    def grounded(self) -> bool:
+        """Standing on walkable ground (``state`` is GROUNDED): the walk and idle animations."""
+        return self.control_state.state is State.GROUNDED
+
+    @property
+    def ground_velocity(self) -> Vec:
+        """Velocity the ground under it would carry its centre at, m/s ((0, 0) with no ground;
+        ``GroundHit.frame_velocity``): subtract it from the body's velocity for the walk cycle's
+        speed on a moving platform."""
+        ground = self.sensed.ground
+        return (0.0, 0.0) if ground is None else ground.frame_velocity
+
+    @property
+    def felt(self) -> Vec:
+        """The force it felt in the last step, N: the support (contacts, joints and its own
+        hover, drive and grip), as the world's force solver read it; m·g up when standing."""
+        return self.world.forces(self.name).support
 
     @property
     def up(self) -> Vec:

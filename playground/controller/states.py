@@ -38,7 +38,11 @@ __all__ = [
 
 
 class State(Enum):
-    """What the controller is doing; the world, the view and tests read it."""
+    """What the controller is doing; the world, the view and tests read it.
+
+    >>> State("grounded") is State.GROUNDED, State.CRUSHED.value
+    (True, 'crushed')
+    """
 
     GROUNDED = "grounded"
     AIRBORNE = "airborne"

@@ -79,6 +79,12 @@ class World(ForceAPI):
     solver counts it as APPLIED. The space drops an arbiter as soon as its contact ends
     (``collision_persistence`` 1), so arbiter impulses are the impulses applied (see
     :class:`~playground.forces.solver.ForceSolver`).
+
+    >>> world = World(gravity=(0.0, -9.81))                 # m/s²; dt = 1/120 s by default
+    >>> ball = world.add_box("ball", mass=2.0, size=(0.2, 0.2), position=(0.0, 10.0))
+    >>> world.run(1.0)                                     # s: 120 steps of free fall
+    >>> round(world.time, 6), round(ball.velocity.y, 6)    # s, m/s: g·t
+    (1.0, -9.81)
     """
 
     def __init__(
