@@ -49,19 +49,27 @@ def lifetimes(level: Level) -> tuple[dict[str, Lifetime], list[Problem]]:
         body = getattr(event, "body", None)
         if body is None:
             continue
-        life = alive.get(body, spawns.get(body))
+        life = alive.get(body)
         if life is None:
-            continue  # an unknown name: reported by the cross-references
-        if not (life.born <= event.t < life.gone):
+            later = spawns.get(body)
+            if later is not None:  # spawned later in the run (at this time: later in the file)
+                problems.append(Problem(f"events.{i}.body", _unborn(body, event.t, later)))
+            continue  # else an unknown name: reported by the cross-references
+        if event.t >= life.gone:
             problems.append(Problem(f"events.{i}.body", _absent(body, event.t, life)))
         elif isinstance(event, Remove):
             alive[body] = Lifetime(life.born, event.t)
     return alive, problems
 
 
+def _unborn(body: str, t: float, life: Lifetime) -> str:
+    after = "after this event" if life.born > t else "by an event after this one"
+    return f"{body!r} is spawned at t = {life.born:g} s, {after} (t = {t:g} s)"
+
+
 def _absent(body: str, t: float, life: Lifetime) -> str:
     if t < life.born:
-        return f"{body!r} is spawned at t = {life.born:g} s, after this event (t = {t:g} s)"
+        return _unborn(body, t, life)
     return f"{body!r} was removed at t = {life.gone:g} s, before this event (t = {t:g} s)"
 
 

@@ -27,7 +27,14 @@ from typing import Self
 
 import pymunk
 
-from playground.limits import MAX_ANGLE, MAX_COORDINATE, MAX_LENGTH, MAX_MASS, MIN_MASS
+from playground.limits import (
+    MAX_ANGLE,
+    MAX_COORDINATE,
+    MAX_LENGTH,
+    MAX_MASS,
+    MAX_STIFFNESS,
+    MIN_MASS,
+)
 from playground.params import bounded, bounded_vec, finite, in_range
 from playground.vec import Vec
 from playground.world.bodies import (
@@ -337,6 +344,13 @@ def unsolvable(constraint: pymunk.Constraint) -> None:
         # The bounds on force and bias are infinite by default: only NaN is refused there.
         if math.isnan(value) if key in _UNBOUNDED else not math.isfinite(value):
             raise ValueError(f"constraint.{key}: expected a finite number, got {value!r}")
+    for key in ("stiffness", "damping"):
+        value = getattr(constraint, key, None)
+        if isinstance(value, float | int) and abs(value) > MAX_STIFFNESS:
+            raise ValueError(
+                f"constraint.{key}: expected at most {MAX_STIFFNESS:g} (N/m or N·m/rad, and per "
+                f"second for damping), got {value!r}: the spring's force overflows at once"
+            )
     if isinstance(constraint, pymunk.GearJoint) and constraint.ratio == 0.0:
         raise ValueError(
             "constraint.ratio: a gear's ratio must not be 0 (the engine divides by it)"

@@ -66,6 +66,11 @@ CASES = {
         + SPAWN.format(mass=1.0, shape='{ kind = "box", size = [1.0, 1.0] }'),
         "events.0.body: 'p' is spawned at t = 0.5 s, after this event",
     ),
+    "removed before its spawn at the same time": (
+        REMOVE.format(t=0.5, body="p")
+        + SPAWN.format(mass=1.0, shape='{ kind = "box", size = [1.0, 1.0] }'),
+        "events.0.body: 'p' is spawned at t = 0.5 s, by an event after this one",
+    ),
     "nullify input on a removed body": (
         PLAYER + REMOVE.format(t=0.5, body="crate") + '[[inputs]]\nt = 1.0\nnullify = "crate"\n',
         "inputs.0.nullify: 'crate' was removed",

