@@ -161,7 +161,7 @@ def act(
 
     grip = ZERO
     if state.grip is not None:
-        grip = scaled(sensed.engine, laws.grip(sensed.grip_impulse, dt / sensed.substeps))
+        grip = scaled(sensed.engine, laws.grip(sensed.grip_impulse, dt))
     ground = hit if reacting else None
     reaction_torque = -torque if reacting and torque is not None else None
     # Positionally, in the order of the fields: building one with keywords is dearer

@@ -276,12 +276,12 @@ class Controller:
 
     @property
     def grip(self) -> float:
-        """Magnitude of the grip joint's force in the last step, N (0 when not hanging)."""
-        joint = self.joint
-        if joint is None:
+        """Magnitude of the grip joint's force, the last step's mean over its substeps, N (0
+        when not hanging)."""
+        grip = self.control_state.grip
+        if grip is None:
             return 0.0
-        cfg = self.world.config
-        return self.laws.grip(float(joint.impulse), cfg.dt / cfg.substeps)
+        return self.laws.grip(grip.impulses.total, self.world.config.dt)
 
     # -- the step --------------------------------------------------------------------------------
 

@@ -17,16 +17,33 @@ from playground.controller.config import ControllerConfig
 from playground.intents import Intent
 from playground.world.world import World
 
-__all__ = ["Grip", "handhold", "hold", "slip"]
+__all__ = ["Grip", "Impulses", "handhold", "hold", "slip"]
+
+
+class Impulses:
+    """A joint's impulse summed over the substeps of a step, N·s: pymunk's ``impulse`` is the
+    last substep's only, so the joint adds each substep's after the solver runs (its
+    ``post_solve``), and :func:`hold` starts the sum again before each step."""
+
+    __slots__ = ("total",)
+
+    def __init__(self) -> None:
+        self.total = 0.0
+
+    def add(self, constraint: pymunk.Constraint, space: pymunk.Space) -> None:
+        """The joint's ``post_solve``: add this substep's impulse."""
+        self.total += constraint.impulse
 
 
 @dataclass(frozen=True, slots=True)
 class Grip:
-    """A hold: the pivot joint from our body to the held body, and the shape held (the climb
-    slides along it). The joint's ``max_force`` is the grip budget, N."""
+    """A hold: the pivot joint from our body to the held body, the shape held (the climb
+    slides along it) and the joint's impulse over the last step's substeps. The joint's
+    ``max_force`` is the grip budget, N."""
 
     joint: pymunk.PivotJoint
     shape: pymunk.Shape
+    impulses: Impulses
 
 
 def handhold(
@@ -50,7 +67,9 @@ def handhold(
     joint = pymunk.PivotJoint(body, other, body.world_to_local(touch), other.world_to_local(touch))
     joint.max_force = config.grip_force
     joint.collide_bodies = False
-    return Grip(joint, info.shape)
+    impulses = Impulses()
+    joint.post_solve = impulses.add
+    return Grip(joint, info.shape, impulses)
 
 
 def slip(grip: Grip) -> float:
@@ -71,11 +90,14 @@ def hold(
 ) -> None:
     """Put the state machine's grip into the world: let go of ``before`` if it is not kept, add
     ``after``'s joint if it is new, and slide a kept hold along the held surface at the
-    intent's climb × ``climb_speed`` over the step (``dt``, s)."""
+    intent's climb × ``climb_speed`` over the step (``dt``, s). The grip held starts summing
+    its impulse for the coming step."""
     if before is not None and before is not after:
         world.remove(before.joint)
+        before.joint.post_solve = None
     if after is None:
         return
+    after.impulses.total = 0.0
     if after is not before:
         world.add_constraint(after.joint)
     elif intent.climb != 0.0:

@@ -167,9 +167,10 @@ def push(sensed: Sensed, target: PushTarget, config: ControllerConfig) -> Vec:
     return (f * nx, f * ny)
 
 
-def grip(impulse: float, substep: float) -> float:
-    """The grip joint's force, N, from its impulse (N·s) over the last ``substep`` (s)."""
-    return impulse / substep
+def grip(impulse: float, dt: float) -> float:
+    """The grip joint's force, N: the step's mean, its impulse summed over the step's substeps
+    (N·s) over the step ``dt`` (s), as the force solver's readings are."""
+    return impulse / dt
 
 
 def reaction(law: Reacting, force: Vec) -> Vec:

@@ -130,7 +130,8 @@ class Sensed:
         touching: any contact touches the body.
         balance_short: the last step's balance needed more than its budget while touching
             (None: no balance acted).
-        grip_impulse: the held joint's impulse in the last substep (0 when not holding).
+        grip_impulse: the held joint's impulse over the last step's substeps (0 when not
+            holding).
         slip: how far the held grip's anchors drifted apart (0 when not holding or not
             grabbing).
         handhold: the grip the hands could take (only looked for while grabbing, empty-handed
@@ -259,7 +260,7 @@ class Senses:
         if grip is None and intent.grab and s is not OFF_BALANCE:
             handhold = grab.handhold(self._space, self._body, self._filter, config)
         holding = grip is not None or handhold is not None
-        grip_impulse = float(grip.joint.impulse) if grip is not None else 0.0
+        grip_impulse = grip.impulses.total if grip is not None else 0.0
         slip = grab.slip(grip) if grip is not None and intent.grab else 0.0
         engine = world.forces(name).engine if holding else ZERO
         push_target = self.push_target(body, ground, config) if intent.push else None

@@ -157,7 +157,7 @@ def _grip_reading() -> Iterator[None]:
     """The controller's own grip reading is halved (the joint itself is unchanged)."""
 
     def make(original: Callable[[float, float], float]) -> Callable[[float, float], float]:
-        return lambda impulse, substep: GRIP_READING_SCALE * original(impulse, substep)
+        return lambda impulse, dt: GRIP_READING_SCALE * original(impulse, dt)
 
     with controller_laws(grip=make):
         yield

@@ -16,7 +16,7 @@ from playground import Controller, ControllerConfig, Intent, State, World
 from playground._engine.state import BodyState
 from playground.controller import ControllerState, GroundHit, Sensed
 from playground.controller.decision import decide
-from playground.controller.grab import Grip
+from playground.controller.grab import Grip, Impulses
 from playground.intents import IDLE
 
 SEESAW_TIP = math.radians(5.0)
@@ -210,7 +210,7 @@ def test_a_grip_is_taken_while_grabbing_and_dropped_when_let_go_or_slipped() -> 
     """A handhold within reach is taken while the grab is held (hanging); releasing the grab,
     or anchors slipped beyond grip_slip, drops it."""
     a, b = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
-    grip = Grip(pymunk.PivotJoint(a, b, (0.0, 0.0)), pymunk.Circle(b, 0.1))
+    grip = Grip(pymunk.PivotJoint(a, b, (0.0, 0.0)), pymunk.Circle(b, 0.1), Impulses())
     taking = dataclasses.replace(airborne(), handhold=grip)
     hanging = decide(taking, ControllerState(), Intent(grab=True), CONFIG)
     assert hanging.state is State.HANGING and hanging.grip is grip

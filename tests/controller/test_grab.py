@@ -1,9 +1,14 @@
 """Laws of grab, hang and climb: the grip holds m·(g + a) within its budget, lets go beyond it
-or on release, and climbing slides the hold along the held body."""
+or on release, climbing slides the hold along the held body, and the grip reading is the step's
+mean at any number of substeps."""
 
 from __future__ import annotations
 
+import math
+import statistics
+
 import pymunk
+import pytest
 
 from playground import (
     Controller,
@@ -14,6 +19,8 @@ from playground import (
     State,
     World,
 )
+from playground.level import find, load
+from playground.scene import build
 
 G = 9.81
 """|g| of the world's default field, m/s²."""
@@ -84,3 +91,29 @@ def test_climbing_moves_the_grip_along_the_held_body() -> None:
     assert player.joint is not None
     moved = abs(player.joint.anchor_b.x - x0)
     assert abs(moved - player.config.climb_speed * 1.0) < 0.02 * player.config.climb_speed
+
+
+GRIP_MEAN_REL = 5e-3
+"""Issue 22: at 2–4 substeps the grip reading is within 0.5 % of m·(g + a) on flying_whale."""
+WHALE_ACCEL = 1.0
+"""m/s²: flying_whale's climb from 2 s."""
+
+
+@pytest.mark.parametrize("substeps", [2, 4])
+def test_the_grip_reading_is_the_steps_mean_over_its_substeps(substeps: int) -> None:
+    """Hanging from the climbing whale at ``substeps`` substeps, the controller's grip is the
+    step's mean joint force, m·(g + a), as the force solver's engine reading is — not the last
+    substep's (at 2 substeps the substeps carry 828.5 and 684.9 N)."""
+    level = load(find("flying_whale"))
+    settings = level.settings.model_copy(update={"substeps": substeps})
+    scene = build(level.model_copy(update={"settings": settings}))
+    player = scene.controllers["player"]
+    scene.run(3.0)
+    readings = []
+    while scene.world.time < 4.0:
+        scene.world.step()
+        readings.append(player.grip)
+    expected = M * (G + WHALE_ACCEL)
+    assert statistics.fmean(readings) == pytest.approx(expected, rel=GRIP_MEAN_REL)
+    engine = scene.world.forces("player").engine
+    assert player.grip == pytest.approx(math.hypot(*engine), rel=GRIP_MEAN_REL)
