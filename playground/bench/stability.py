@@ -315,18 +315,23 @@ def _budget(ok: bool, step: int, message: str) -> None:
 def check_budgets(c: Controller, where: str, step: int = 0) -> None:
     """Raise :class:`InvariantError` if controller ``c`` commanded more than a budget."""
     cfg = c.config
+    m = c.mass
     f = c.last_forces
     slack = 1.0 + TOL_BUDGET
     hover = math.hypot(*f.hover)
-    _budget(hover <= cfg.hover_force * slack, step, f"{where}: hover {hover} N")
+    _budget(hover <= cfg.hover_budget(m) * slack, step, f"{where}: hover {hover} N")
     drive = math.hypot(*f.drive)
-    limit = max(cfg.ground_force, cfg.air_force) * slack
+    limit = max(cfg.ground_budget(m), cfg.air_budget(m)) * slack
     _budget(drive <= limit, step, f"{where}: drive {drive} N")
     torque = abs(f.balance_torque)
-    _budget(torque <= cfg.balance_torque * slack, step, f"{where}: balance torque {torque} N·m")
+    budget = cfg.balance_budget(m) * slack
+    _budget(torque <= budget, step, f"{where}: balance torque {torque} N·m")
     push = math.hypot(*f.push)
-    _budget(push <= cfg.push_force * slack, step, f"{where}: push {push} N")
-    _budget(c.grip <= cfg.grip_force * slack, step, f"{where}: grip {c.grip} N")
+    _budget(push <= cfg.push_budget(m) * slack, step, f"{where}: push {push} N")
+    # The grip's budget is the joint's max force, set from the mass when it was taken.
+    joint = c.joint
+    grip_budget = joint.max_force if joint is not None else cfg.grip_budget(m)
+    _budget(c.grip <= grip_budget * slack, step, f"{where}: grip {c.grip} N")
 
 
 def run_checked(hard: Hard, seconds: float | None = None) -> dict[str, float]:

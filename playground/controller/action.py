@@ -154,7 +154,7 @@ def act(
     short: bool | None = None
     if not config.lock_rotation:
         need = laws.balance(sensed, hit if grounded else None, config)
-        budget = config.balance_torque
+        budget = config.balance_budget(sensed.body.mass)
         torque = balance_torque = max(-budget, min(budget, need))
         touching = (grounded and hit is not None) or sensed.touching
         short = abs(need) > budget and touching and state.state is not GETTING_UP

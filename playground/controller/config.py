@@ -27,12 +27,27 @@ from playground.limits import (
 )
 from playground.params import check, param
 
-__all__ = ["ControllerConfig"]
+__all__ = ["G0", "TUNED_HEIGHT", "TUNED_WEIGHT", "ControllerConfig"]
+
+G0 = 9.81
+"""m/s²: the standard gravity a body's weight is taken in for its budgets (the world's default
+field), so that a budget stays where the field vanishes (a spinning ring, a nullified body)."""
+TUNED_WEIGHT = 70.0 * G0
+"""N: the weight of the 70 kg person the default budgets were tuned on (686.7 N)."""
+TUNED_HEIGHT = 1.8
+"""m: that person's height."""
+MAX_WEIGHTS = 1.0e4
+"""The largest budget in the body's weights."""
 
 
 @dataclass(frozen=True, slots=True)
 class ControllerConfig:
-    """Body, sensing and force budgets; defaults fit a 70 kg, 1.8 m person.
+    """Body, sensing and force budgets; defaults fit a 70 kg, 1.8 m person, and the budgets
+    follow the body: each is a multiple of its weight m·g₀ (a torque, of weight × height) unless
+    given in newtons (``hover_force`` and the like), so one config serves a 35 kg and a 140 kg
+    body. The defaults are the budgets tuned for 70 kg (``hover_force`` 5000 N, ``ground_force``
+    350 N, ``air_force`` 70 N, ``balance_torque`` 600 N·m, ``grip_force`` 2000 N,
+    ``push_force`` 1000 N, ``crush_force`` 1500 N) over its weight.
 
     ``mass`` is the body's mass when it is built (``World.set_mass`` may change it later: the
     controller follows the body's mass, see :attr:`Controller.mass`). ``ride_height`` lies above
@@ -84,12 +99,18 @@ class ControllerConfig:
     hover_damping: float = param(
         1.0, doc="Damping ratio of the hover spring (1: critical, 0: undamped).", ge=0.0
     )
-    hover_force: float = param(
-        5000.0,
-        doc="The legs' budget: the most the hover pushes with.",
+    hover_force: float | None = param(
+        None,
+        doc="The legs' budget: the most the hover pushes with (None: hover_weights).",
         unit="N",
         gt=0.0,
         le=MAX_FORCE,
+    )
+    hover_weights: float = param(
+        5000.0 / TUNED_WEIGHT,
+        doc="The legs' budget in the body's weights (unless hover_force is set).",
+        gt=0.0,
+        le=MAX_WEIGHTS,
     )
     max_slope: float = param(
         0.7,
@@ -107,22 +128,49 @@ class ControllerConfig:
         gt=0.0,
     )
     traction: float = param(1.0, doc="Foot friction coefficient.", ge=0.0)
-    ground_force: float = param(
-        350.0, doc="Drive force budget on the ground.", unit="N", gt=0.0, le=MAX_FORCE
+    ground_force: float | None = param(
+        None,
+        doc="Drive force budget on the ground (None: ground_weights).",
+        unit="N",
+        gt=0.0,
+        le=MAX_FORCE,
     )
-    air_force: float = param(
-        70.0,
-        doc="Steering force budget in the air (never used to brake).",
+    ground_weights: float = param(
+        350.0 / TUNED_WEIGHT,
+        doc="Drive force budget in the body's weights (unless ground_force is set).",
+        gt=0.0,
+        le=MAX_WEIGHTS,
+    )
+    air_force: float | None = param(
+        None,
+        doc="Steering force budget in the air, never used to brake (None: air_weights).",
         unit="N",
         ge=0.0,
         le=MAX_FORCE,
+    )
+    air_weights: float = param(
+        70.0 / TUNED_WEIGHT,
+        doc="Steering force budget in the body's weights (unless air_force is set).",
+        ge=0.0,
+        le=MAX_WEIGHTS,
     )
     balance_frequency: float = param(
         2.5, doc="Natural frequency of the upright PD.", unit="Hz", gt=0.0, le=MAX_FREQUENCY
     )
     balance_damping: float = param(1.5, doc="Damping ratio of the upright PD.", gt=0.0)
-    balance_torque: float = param(
-        600.0, doc="Balance torque budget.", unit="N·m", gt=0.0, le=MAX_FORCE
+    balance_torque: float | None = param(
+        None,
+        doc="Balance torque budget (None: balance_weight_heights).",
+        unit="N·m",
+        gt=0.0,
+        le=MAX_FORCE,
+    )
+    balance_weight_heights: float = param(
+        600.0 / (TUNED_WEIGHT * TUNED_HEIGHT),
+        doc="Balance torque budget in the body's weight × its height (unless balance_torque "
+        "is set).",
+        gt=0.0,
+        le=MAX_WEIGHTS,
     )
     balance_loss_time: float = param(
         0.3,
@@ -164,8 +212,18 @@ class ControllerConfig:
     grab_reach: float = param(
         0.3, doc="How far beyond the head the hands reach.", unit="m", gt=0.0, le=MAX_LENGTH
     )
-    grip_force: float = param(
-        2000.0, doc="Grip budget (the joint's max force).", unit="N", gt=0.0, le=MAX_FORCE
+    grip_force: float | None = param(
+        None,
+        doc="Grip budget, the joint's max force (None: grip_weights).",
+        unit="N",
+        gt=0.0,
+        le=MAX_FORCE,
+    )
+    grip_weights: float = param(
+        2000.0 / TUNED_WEIGHT,
+        doc="Grip budget in the body's weights (unless grip_force is set).",
+        gt=0.0,
+        le=MAX_WEIGHTS,
     )
     grip_slip: float = param(
         0.1,
@@ -188,13 +246,39 @@ class ControllerConfig:
         gt=0.0,
         le=MAX_LENGTH,
     )
-    push_force: float = param(1000.0, doc="Push budget.", unit="N", gt=0.0, le=MAX_FORCE)
-    crush_force: float = param(
-        1500.0,
-        doc="Crushed when the load from above exceeds this.",
+    push_force: float | None = param(
+        None,
+        doc="Push budget (None: push_weights).",
         unit="N",
         gt=0.0,
         le=MAX_FORCE,
+    )
+    push_weights: float = param(
+        1000.0 / TUNED_WEIGHT,
+        doc="Push budget in the body's weights (unless push_force is set).",
+        gt=0.0,
+        le=MAX_WEIGHTS,
+    )
+    crush_force: float | None = param(
+        None,
+        doc="Crushed when the load from above exceeds this (None: crush_weights).",
+        unit="N",
+        gt=0.0,
+        le=MAX_FORCE,
+    )
+    crush_weights: float = param(
+        1500.0 / TUNED_WEIGHT,
+        doc="Crushed when the load from above exceeds this many of the body's weights "
+        "(unless crush_force is set).",
+        gt=0.0,
+        le=MAX_WEIGHTS,
+    )
+    crush_release_time: float = param(
+        0.15,
+        doc="Crushed stays crushed until the load from above has stayed at most crush_force "
+        "(or off) this long.",
+        unit="s",
+        ge=0.0,
     )
 
     def __post_init__(self) -> None:
@@ -213,6 +297,41 @@ class ControllerConfig:
             )
         if self.max_slope >= math.pi / 2.0:
             raise ValueError(f"max_slope: expected less than π/2 rad, got {self.max_slope!r}")
+
+    def hover_budget(self, mass: float) -> float:
+        """The legs' budget for a body of ``mass`` kg, N."""
+        f = self.hover_force
+        return f if f is not None else self.hover_weights * mass * G0
+
+    def ground_budget(self, mass: float) -> float:
+        """The drive's budget on the ground for a body of ``mass`` kg, N."""
+        f = self.ground_force
+        return f if f is not None else self.ground_weights * mass * G0
+
+    def air_budget(self, mass: float) -> float:
+        """The air steering's budget for a body of ``mass`` kg, N."""
+        f = self.air_force
+        return f if f is not None else self.air_weights * mass * G0
+
+    def balance_budget(self, mass: float) -> float:
+        """The balance torque's budget for a body of ``mass`` kg and this height, N·m."""
+        t = self.balance_torque
+        return t if t is not None else self.balance_weight_heights * mass * G0 * self.height
+
+    def grip_budget(self, mass: float) -> float:
+        """The grip's budget for a body of ``mass`` kg, N."""
+        f = self.grip_force
+        return f if f is not None else self.grip_weights * mass * G0
+
+    def push_budget(self, mass: float) -> float:
+        """The push's budget for a body of ``mass`` kg, N."""
+        f = self.push_force
+        return f if f is not None else self.push_weights * mass * G0
+
+    def crush_threshold(self, mass: float) -> float:
+        """The load from above that crushes a body of ``mass`` kg, N."""
+        f = self.crush_force
+        return f if f is not None else self.crush_weights * mass * G0
 
     @property
     def half_length(self) -> float:

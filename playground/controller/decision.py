@@ -65,6 +65,7 @@ def decide(
 
     grounded_at = state.grounded_at
     still = state.still
+    relieved = 0.0
     getup_at = state.getup_at
     getup_from = state.getup_from
     on_ground = hit is not None and hit.walkable and not rising
@@ -91,10 +92,14 @@ def decide(
     elif grip is not None:
         current = HANGING
     else:
-        if sensed.load > config.crush_force and sensed.contact_load > 0.0:
+        if sensed.load > config.crush_threshold(sensed.body.mass) and sensed.contact_load > 0.0:
             # Crushed: bearing more than crush_force from above with the load still on us (a
             # crusher held off at arm's length by the push no longer pins us).
             current = CRUSHED
+        elif current is CRUSHED and state.relieved + dt < config.crush_release_time:
+            # Relieved only for a moment: a rocking or bouncing load swings around the
+            # threshold (and off and on again), and a state that followed it would flicker.
+            relieved = state.relieved + dt
         elif on_ground:
             current = GROUNDED
         else:
@@ -119,7 +124,8 @@ def decide(
     # (docs/performance.md, row positional), and one is built every step.
     return ControllerState(
         current, intent.jump, jump_pressed_at, grounded_at, rising, last_ground, saturated,
-        still, getup_at, getup_from, grip, take_off_from, intent.gravity, intent.nullify,
+        still, relieved, getup_at, getup_from, grip, take_off_from, intent.gravity,
+        intent.nullify,
     )  # fmt: skip
 
 

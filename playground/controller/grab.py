@@ -65,7 +65,7 @@ def handhold(
     other = info.shape.body
     touch = info.point
     joint = pymunk.PivotJoint(body, other, body.world_to_local(touch), other.world_to_local(touch))
-    joint.max_force = config.grip_force
+    joint.max_force = config.grip_budget(body.mass)
     joint.collide_bodies = False
     impulses = Impulses()
     joint.post_solve = impulses.add

@@ -47,7 +47,8 @@ Reacting = Literal["hover", "drive", "jump", "push"]
 def hover(
     sensed: Sensed, state: ControllerState, hit: GroundHit, config: ControllerConfig
 ) -> float:
-    """The hover spring along the ground normal, within ``hover_force``: its magnitude, N (the
+    """The hover spring along the ground normal, within the legs' budget
+    (:meth:`~playground.controller.config.ControllerConfig.hover_budget`): its magnitude, N (the
     target height rises smoothly while getting up)."""
     target = config.ride_height
     if state.state is GETTING_UP:
@@ -81,7 +82,7 @@ def hover(
     k = m * omega * omega
     c = 2.0 * config.hover_damping * m * omega
     spring = hover_spring(k, c, m, target - h, v_n, sensed.dt, sensed.substeps)
-    return min(config.hover_force, max(0.0, weight + spring))
+    return min(config.hover_budget(m), max(0.0, weight + spring))
 
 
 def drive(
@@ -105,7 +106,7 @@ def drive(
     accel = (move * config.max_speed - v_t) / max(config.drive_time, sensed.dt) - (
         (gx - ax) * tx + (gy - ay) * ty
     )
-    budget = min(config.ground_force, config.traction * hover)
+    budget = min(config.ground_budget(body.mass), config.traction * hover)
     f = max(-budget, min(budget, body.mass * accel))
     if f == 0.0:
         return ZERO
@@ -125,7 +126,8 @@ def steer(sensed: Sensed, move: float, config: ControllerConfig) -> Vec:
     )
     if f * move <= 0.0:
         return ZERO
-    f = max(-config.air_force, min(config.air_force, f))
+    air = config.air_budget(body.mass)
+    f = max(-air, min(air, f))
     return (f * tx, f * ty)
 
 
@@ -163,7 +165,7 @@ def push(sensed: Sensed, target: PushTarget, config: ControllerConfig) -> Vec:
     cx, cy = target.point
     qx, qy = target.origin
     nx, ny = unit_or(cx - qx, cy - qy, (-body.sin, body.cos))
-    f = config.push_force
+    f = config.push_budget(body.mass)
     return (f * nx, f * ny)
 
 

@@ -79,6 +79,7 @@ class ControllerState:
         last_ground: the walkable ground it last stood on (a coyote jump pushes off it).
         saturated: how long the balance has needed more than its budget while touching.
         still: how long it has lain still while off balance.
+        relieved: how long a crushed controller's load has stayed at most ``crush_force``.
         getup_at: when it started getting up.
         getup_from: its height over the ground then, m.
         grip: the grip held (None: none).
@@ -96,6 +97,7 @@ class ControllerState:
     last_ground: GroundHit | None = None
     saturated: float = 0.0
     still: float = 0.0
+    relieved: float = 0.0
     getup_at: float = 0.0
     getup_from: float = 0.0
     grip: Grip | None = None

@@ -18,6 +18,8 @@ from playground.controller import ControllerState, GroundHit, Sensed
 from playground.controller.decision import decide
 from playground.controller.grab import Grip, Impulses
 from playground.intents import IDLE
+from playground.level import find, load
+from playground.scene import build
 
 SEESAW_TIP = math.radians(5.0)
 """rad: the seesaw has clearly tipped toward the player (its free travel is about 19°)."""
@@ -108,6 +110,8 @@ def test_a_slow_tilt_within_the_walkable_slope_keeps_the_player_standing() -> No
 CONFIG = ControllerConfig()
 DT = 1 / 120
 """s: the step of the sensed values below."""
+CRUSH = CONFIG.crush_threshold(CONFIG.mass)
+"""N: the load that crushes the sensed body below (of the config's mass)."""
 
 
 def standing(t: float = 1.0, *, vy: float = 0.0, load: float = 0.0) -> Sensed:
@@ -202,7 +206,7 @@ def test_needing_more_than_the_balance_budget_for_too_long_loses_balance() -> No
 @pytest.mark.parametrize(("load", "state"), [(1.1, State.CRUSHED), (0.9, State.GROUNDED)])
 def test_a_load_above_the_crush_force_crushes(load: float, state: State) -> None:
     """Bearing more than crush_force from above through contacts is crushed."""
-    after = decide(standing(load=load * CONFIG.crush_force), GROUNDED, IDLE, CONFIG)
+    after = decide(standing(load=load * CRUSH), GROUNDED, IDLE, CONFIG)
     assert after.state is state
 
 
@@ -219,3 +223,41 @@ def test_a_grip_is_taken_while_grabbing_and_dropped_when_let_go_or_slipped() -> 
     assert decide(airborne(), hanging, IDLE, CONFIG).grip is None
     slipped = dataclasses.replace(airborne(), slip=2.0 * CONFIG.grip_slip)
     assert decide(slipped, hanging, Intent(grab=True), CONFIG).grip is None
+
+
+def test_a_crushed_controller_stays_crushed_through_a_moment_of_relief() -> None:
+    """Hysteresis in time: once crushed, a load dropping to crush_force or below (or off) for
+    less than crush_release_time keeps the state; longer, it stands again."""
+    crushed = ControllerState(state=State.CRUSHED)
+    relief = standing(load=0.5 * CRUSH)
+    state = decide(relief, crushed, IDLE, CONFIG)
+    assert state.state is State.CRUSHED and state.relieved == DT
+    steps = 1
+    while state.state is State.CRUSHED:
+        state = decide(relief, state, IDLE, CONFIG)
+        steps += 1
+    assert state.state is State.GROUNDED and state.relieved == 0.0
+    assert steps == pytest.approx(CONFIG.crush_release_time / DT, abs=1.0)
+    pressed_again = decide(standing(load=2.0 * CRUSH), state, IDLE, CONFIG)
+    assert pressed_again.state is State.CRUSHED
+
+
+def test_a_bouncing_crate_crushes_a_light_player_once() -> None:
+    """crusher with both players at half the mass (35 kg): the 250 kg crate bounces on the
+    lighter player's hover, its load swinging around crush_force and off; each player is
+    crushed once, not crushed, standing, crushed again."""
+    level = load(find("crusher"))
+    actors = [
+        a.model_copy(update={"controller": a.controller.model_copy(update={"mass": 35.0})})
+        if a.controller is not None
+        else a
+        for a in level.actors
+    ]
+    scene = build(level.model_copy(update={"actors": actors}))
+    changes = {name: 0 for name in scene.controllers}
+    while scene.world.time < 2.0:
+        before = {name: c.state for name, c in scene.controllers.items()}
+        scene.world.step()
+        for name, c in scene.controllers.items():
+            changes[name] += c.state is not before[name] and scene.world.time > 0.1
+    assert changes == {name: 1 for name in scene.controllers}

@@ -107,7 +107,7 @@ def test_drive_force_on_an_accelerating_platform_is_m_a(accel: float) -> None:
     """Newton's second law: below the traction limit the drive carries the player at the
     platform's acceleration, so the drive force (and the horizontal support) is m·a."""
     cfg = ControllerConfig()
-    assert accel < min(cfg.traction * G, cfg.ground_force / cfg.mass)
+    assert accel < min(cfg.traction * G, cfg.ground_budget(cfg.mass) / cfg.mass)
     world = World()
     platform(world)
     world.add_mover("platform", Elevator(axis=(1.0, 0.0), acceleration=accel, start_time=0.5))
@@ -156,7 +156,7 @@ def test_air_steering_never_brakes_and_stays_within_its_budget() -> None:
     exactly; against the motion the speed changes by at most air_force·T/m."""
     cfg = ControllerConfig()
     flight = 0.5
-    for move, bound in ((0.0, 0.0), (-1.0, cfg.air_force * flight / cfg.mass)):
+    for move, bound in ((0.0, 0.0), (-1.0, cfg.air_budget(cfg.mass) * flight / cfg.mass)):
         world = World()
         player = Controller(world, "player", (0.0, 100.0), cfg, Script(((0.0, Intent(move=move)),)))
         player.body.velocity = (2.0, 0.0)
@@ -278,7 +278,7 @@ def test_a_heavy_box_dropped_on_the_player_crushes_it() -> None:
     world, player, _ = crusher_scene(push_force=1000.0)
     world.run(2.0)
     weight = CRUSHER_MASS * G
-    assert player.config.crush_force < weight
+    assert player.config.crush_threshold(M) < weight
     assert player.state is State.CRUSHED
     assert abs(player.load - weight) < TOL_LOAD_REL * weight
     assert abs(player.last_forces.hover[1] - (M * G + weight)) < TOL_LOAD_REL * weight
@@ -527,7 +527,7 @@ def test_at_ride_height_and_at_rest_the_hover_carries_exactly_the_weight(
 ) -> None:
     """Law: with no height error and no speed the spring adds nothing, so the hover is the weight
     feed-forward m·g alone, for any mass, gravity, dt and substeps (within the legs' budget)."""
-    assume(mass * g < CONFIG.hover_force)
+    assume(mass * g < CONFIG.hover_budget(mass))
     s = sensed(body_state(mass=mass), ground(), g=g, dt=dt, substeps=substeps)
     assert laws.hover(s, GROUNDED_STATE, ground(), CONFIG) == mass * g
 
@@ -539,7 +539,7 @@ def test_the_hover_stays_within_the_legs_budget_and_never_pulls(
 ) -> None:
     """Law: 0 ≤ hover ≤ hover_force whatever the height and speed (a floor cannot pull)."""
     s = sensed(body_state(y=y, vy=vy, mass=mass), ground(), g=g, dt=dt)
-    assert 0.0 <= laws.hover(s, GROUNDED_STATE, ground(), CONFIG) <= CONFIG.hover_force
+    assert 0.0 <= laws.hover(s, GROUNDED_STATE, ground(), CONFIG) <= CONFIG.hover_budget(mass)
 
 
 @UNTIMED
@@ -572,7 +572,7 @@ def test_the_drive_acts_along_the_ground_within_budget_and_traction(
     traction × hover); with no hover it is the ZERO vector itself (no traction)."""
     hit = ground(normal_angle=slope)
     f = laws.drive(sensed(body_state(vx=vx), hit), hit, move, hover, CONFIG)
-    budget = min(CONFIG.ground_force, CONFIG.traction * hover)
+    budget = min(CONFIG.ground_budget(M), CONFIG.traction * hover)
     assert math.hypot(*f) <= budget * (1.0 + TOL_LAW_REL)
     nx, ny = hit.normal
     assert abs(f[0] * nx + f[1] * ny) <= TOL_LAW_REL * max(1.0, budget)
@@ -597,7 +597,7 @@ def test_air_steering_never_brakes_and_stays_within_its_budget_as_a_law(
 ) -> None:
     """Law: the air steering pushes toward the move (never against it) within air_force."""
     f = laws.steer(sensed(body_state(vx=vx, mass=mass)), move, CONFIG)
-    assert math.hypot(*f) <= CONFIG.air_force * (1.0 + TOL_LAW_REL)
+    assert math.hypot(*f) <= CONFIG.air_budget(mass) * (1.0 + TOL_LAW_REL)
     assert f is ZERO or f[0] * move > 0.0
 
 
@@ -640,10 +640,11 @@ def test_the_push_is_the_whole_budget_away_from_the_arms(px: float, py: float) -
     assume(math.hypot(px, py) > 1e-6)
     target = PushTarget(pymunk.Body(1.0, 1.0), (px, py), (0.0, 0.0))
     fx, fy = laws.push(sensed(body_state()), target, CONFIG)
-    assert math.hypot(fx, fy) == pytest.approx(CONFIG.push_force, rel=TOL_LAW_REL)
-    assert fx * px + fy * py == pytest.approx(CONFIG.push_force * math.hypot(px, py), rel=1e-9)
+    push = CONFIG.push_budget(M)
+    assert math.hypot(fx, fy) == pytest.approx(push, rel=TOL_LAW_REL)
+    assert fx * px + fy * py == pytest.approx(push * math.hypot(px, py), rel=1e-9)
     on_axis = PushTarget(target.body, (0.0, 0.0), (0.0, 0.0))
-    assert laws.push(sensed(body_state()), on_axis, CONFIG) == (0.0, CONFIG.push_force)
+    assert laws.push(sensed(body_state()), on_axis, CONFIG) == (0.0, push)
 
 
 @given(

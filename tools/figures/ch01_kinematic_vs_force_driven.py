@@ -109,7 +109,7 @@ def ch1_drift_2_cm() -> float:
 def ch1_budget_accel() -> float:
     """The largest acceleration the drive budget can follow: ground_force / mass, m/s²."""
     c = ControllerConfig()
-    return c.ground_force / c.mass
+    return c.ground_budget(c.mass) / c.mass
 
 
 @number

@@ -145,7 +145,7 @@ def ch6_null_speed_change() -> float:
 def ch6_air_budget_bound() -> float:
     """What the air budget allows over 1.5 s: air_force / m · 1.5 s, m/s."""
     c = ControllerConfig()
-    return c.air_force / c.mass * 1.5
+    return c.air_budget(c.mass) / c.mass * 1.5
 
 
 LEAP_TIME = 1.0
