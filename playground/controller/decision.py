@@ -92,7 +92,9 @@ def decide(
     elif grip is not None:
         current = HANGING
     else:
-        if sensed.load > config.crush_threshold(sensed.body.mass) and sensed.contact_load > 0.0:
+        # The contact load first: it is zero while hovering, and the threshold is a call.
+        pressed = sensed.contact_load > 0.0
+        if pressed and sensed.load > config.crush_threshold(sensed.body.mass):
             # Crushed: bearing more than crush_force from above with the load still on us (a
             # crusher held off at arm's length by the push no longer pins us).
             current = CRUSHED
