@@ -27,7 +27,7 @@ from playground.view.capture import save_picture
 from playground.view.clock import HEADLESS_FRAME, SPEEDS, Accumulator
 from playground.view.frame import Drawers, Picture, draw_frame
 from playground.view.free_body import free_body
-from playground.view.hud import Hud, HudInfo, StageCosts
+from playground.view.hud import MARGIN, Hud, HudInfo, StageCosts
 from playground.view.keyboard import CONTROLS
 from playground.view.lab import Action, LabPanel
 from playground.view.overlay import OVERLAY_KEYS, Overlay
@@ -377,6 +377,7 @@ class App:
             compact=self.compact,
             tuning=self.tuning.visible,
             help=(CONTROLS, show.description) if self.show_help else None,
+            hud_left=self.lab.rect.right + MARGIN if self.lab.visible else MARGIN,
         )
 
     def _notes(self) -> list[str]:

@@ -19,7 +19,7 @@ from playground.vec import Vec
 from playground.view.camera import Camera
 from playground.view.draw import COLOURS, draw_grid
 from playground.view.free_body import INSET_PX, MIN_INSET_PX, FreeBody, draw_free_body
-from playground.view.hud import Hud, HudInfo
+from playground.view.hud import MARGIN, Hud, HudInfo
 from playground.view.overlay import draw_panel
 from playground.view.painter import Painter
 from playground.view.pointer import draw_mouse
@@ -49,6 +49,7 @@ class Picture:
         compact: leave out the overlay panel and write the legend small.
         tuning: draw the tuning panel.
         help: the controls (key, action) and the level's description, when the help is shown.
+        hud_left: the HUD's left edge, px (right of the lab panel while it is shown).
     """
 
     world: World
@@ -66,6 +67,7 @@ class Picture:
     compact: bool
     tuning: bool
     help: tuple[Sequence[tuple[str, str]], str] | None
+    hud_left: int = MARGIN
 
 
 @dataclass(frozen=True, slots=True)
@@ -85,7 +87,7 @@ def draw_frame(surf: pygame.Surface, picture: Picture, drawers: Drawers) -> pyga
     surf.fill(COLOURS["background"])
     draw_grid(surf, picture.camera)
     _world(surf, picture, drawers.painter)
-    drawers.hud.draw(surf, picture.hud, picture.scope)
+    drawers.hud.draw(surf, picture.hud, picture.scope, picture.hud_left)
     _panels(surf, picture, drawers)
     return surf
 
@@ -124,14 +126,14 @@ def _panels(surf: pygame.Surface, p: Picture, d: Drawers) -> None:
     if p.free_body is not None:
         above = hud.scope_layout.plot.top if hud.scope_layout is not None else height
         bottom = min(above - 2 * FREE_BODY_GAP_PX - d.small.get_linesize(), height)
-        place = _free_body_place(p, bottom, (right, 8), hud.rects)
+        place = _free_body_place(p, bottom, (right, p.hud_left), hud.rects)
         if place is not None:
             corner, side = place
             rect = draw_free_body(surf, d.small, p.camera, p.free_body, corner, side)
             hud.rects.append(rect)
     if p.tuning:
         below = max((r.bottom for r in hud.rects[:2]), default=0)
-        hud.rects.append(d.tuning.draw(surf, (8, below + 4)))
+        hud.rects.append(d.tuning.draw(surf, (p.hud_left, below + 4)))
     if p.help is not None:
         hud.draw_help(surf, *p.help)
 

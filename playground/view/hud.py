@@ -104,8 +104,11 @@ class Hud:
             surf.blit(font.render(text, True, colour), (x + 6, y + 4 + i * h))
         return rect
 
-    def draw(self, surf: pygame.Surface, info: HudInfo, scope: Scope | None) -> None:
-        """Draw the status panel (top left) and the scope strip (bottom)."""
+    def draw(
+        self, surf: pygame.Surface, info: HudInfo, scope: Scope | None, left: int = MARGIN
+    ) -> None:
+        """Draw the status panel (top left, its left edge at ``left`` px) and the scope strip
+        (bottom)."""
         self.rects = []
         self.scope_layout = None
         title = self.font.render(info.title, True, TEXT)
@@ -121,10 +124,10 @@ class Hud:
             for stage, cost in info.stage_costs.items():
                 lines.append((f"  {stage.name.lower():<8} {cost * 1e6:7.1f} µs", DIM))
         lines.extend((n, DIM) for n in info.notes)
-        head = pygame.Rect(MARGIN, MARGIN, title.get_width() + 12, title.get_height() + 6)
+        head = pygame.Rect(left, MARGIN, title.get_width() + 12, title.get_height() + 6)
         self._panel(surf, head)
-        surf.blit(title, (MARGIN + 6, MARGIN + 3))
-        self._lines(surf, lines, MARGIN, head.bottom + 2)
+        surf.blit(title, (left + 6, MARGIN + 3))
+        self._lines(surf, lines, left, head.bottom + 2)
         if scope is not None:
             self._scope(surf, scope)
 

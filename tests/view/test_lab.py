@@ -91,3 +91,16 @@ def test_hidden_it_takes_no_mouse_events() -> None:
     assert not app.lab.visible and not app.lab.process(press)
     app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_l))
     assert app.lab.process(press)
+
+
+def test_the_hud_moves_right_of_the_shown_panel() -> None:
+    """Law: while the lab panel is shown the HUD's panels start right of it (it hid the title,
+    the clock and the player's state); hidden, the HUD is back at the window's edge."""
+    app = lab_app()
+    app.render()
+    title, status = app.hud.rects[:2]
+    assert title.left > app.lab.rect.right and status.left > app.lab.rect.right
+    app.handle(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_l))
+    app.render()
+    title, status = app.hud.rects[:2]
+    assert title.left == status.left == 8
