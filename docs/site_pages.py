@@ -318,6 +318,38 @@ def generated_pages() -> dict[str, str]:
     return pages
 
 
+def api_nav() -> list[str]:
+    """The API section of the site's navigation: the index, then each page in
+    :data:`API_GROUPS` order (only the groups that have names, so a moved name never leaves an
+    empty page behind)."""
+    return sorted(api_pages(), key=lambda path: (path != "api/index.md", _page_rank(path)))
+
+
+def _page_rank(path: str) -> int:
+    key = path.removeprefix("api/").removesuffix(".md")
+    return list(API_GROUPS).index(key) if key in API_GROUPS else -1
+
+
+def _replace_api(nav: Any) -> bool:
+    """Put :func:`api_nav` under the nav's ``API`` entry; whether one was found."""
+    for item in nav if isinstance(nav, list) else ():
+        if isinstance(item, dict):
+            for title, sub in item.items():
+                if title == "API":
+                    item[title] = api_nav()
+                    return True
+                if _replace_api(sub):
+                    return True
+    return False
+
+
+def on_config(config: Any) -> Any:
+    """MkDocs hook: the API pages in the navigation, from ``playground.__all__``."""
+    if not _replace_api(config["nav"]):
+        raise ValueError("mkdocs.yml: the nav has no 'API' entry for the generated API pages")
+    return config
+
+
 def on_files(files: Any, config: Any) -> Any:
     """MkDocs hook: add the generated pages to the site's files."""
     from mkdocs.structure.files import File
