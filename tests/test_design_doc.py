@@ -7,6 +7,7 @@ name exists, and nothing in the repository cites a design document that is not i
 from __future__ import annotations
 
 import re
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -55,3 +56,44 @@ def test_every_markdown_file_cited_is_in_the_repository() -> None:
         if not (ROOT / cited).is_file():
             missing.add(f"README.md: {cited}")
     assert sorted(missing) == []
+
+
+MAP_ROW = re.compile(r"^\| [^|`]+ \| ((?:`[\w/.]+`(?:, )?)+) \|", re.MULTILINE)
+"""A row of the newcomer's map: its layer's modules, each in backticks."""
+
+
+def map_layers() -> list[set[str]]:
+    """The newcomer's map (§6), top to bottom: each row's modules as dotted names."""
+    section = NOTES.read_text("utf-8").split("## §6", 1)[1].split("## §7", 1)[0]
+    rows = MAP_ROW.findall(section)
+    return [
+        {m.strip("`").removesuffix("/").removesuffix(".py") for m in row.split(", ")}
+        for row in rows
+    ]
+
+
+def contract_layers() -> list[set[str]]:
+    """The layers contract of pyproject.toml, top to bottom (optional layers unwrapped)."""
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text("utf-8"))
+    (layers,) = [
+        c["layers"] for c in config["tool"]["importlinter"]["contracts"] if c["type"] == "layers"
+    ]
+    return [{m.strip().strip("()") for m in layer.split("|")} for layer in layers]
+
+
+def test_the_map_lists_the_layers_of_the_import_contract_in_order() -> None:
+    """The newcomer's map is the contract that lint-imports checks: the same layers, the same
+    modules in each, in the same order (so neither can change without the other)."""
+    assert map_layers() == contract_layers()
+
+
+def test_every_module_of_the_package_is_on_the_map() -> None:
+    """Every package and top-level module of playground/ has its row, and every row names only
+    what exists."""
+    on_map = set().union(*map_layers())
+    present = {
+        p.stem if p.suffix == ".py" else p.name
+        for p in (ROOT / "playground").iterdir()
+        if (p.suffix == ".py" and p.stem != "__init__") or (p / "__init__.py").is_file()
+    }
+    assert on_map == present

@@ -2,7 +2,7 @@
 
 A replay is read like a level: a JSON object validated by pydantic, every number bounded, unknown
 keys refused. Its ``changes`` and ``grabs`` lists are checked entry by entry by
-:mod:`playground.replay`, which names each entry (each change is an
+:mod:`playground.scene.replay`, which names each entry (each change is an
 :class:`~playground.level.timeline.IntentTable`, as a level's ``[[inputs]]`` table is).
 """
 
