@@ -79,7 +79,7 @@ def site() -> Path:
     """The built site: ``$PLAYGROUND_SITE``, or built here when MkDocs is installed."""
     given = os.environ.get("PLAYGROUND_SITE")
     if given:
-        return Path(given)
+        return Path(given).resolve()  # a relative path has no file:// URI for the browser
     if importlib.util.find_spec("mkdocs") is None:
         pytest.skip("the docs extra is not installed")
     out = Path(tempfile.mkdtemp(prefix="site-"))
