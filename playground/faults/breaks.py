@@ -31,7 +31,7 @@ from playground.faults.patching import (
 from playground.gravity import GravityRule
 from playground.gravity import perception as perception_mod
 from playground.vec import Vec
-from playground.world import force_api, gravity_stage
+from playground.world import gravity_stage
 from playground.world import world as world_mod
 
 HOVER_REACTION_SCALE = 0.05
@@ -220,9 +220,9 @@ def _perceived_gravity_rotated() -> Iterator[None]:
         return read
 
     with (
-        replaced(force_api.ForceAPI, "perceived_gravity", turned),
-        replaced(force_api.ForceAPI, "perceived_up", turned),
-        replaced(force_api.ForceAPI, "perceived_up_and_gravity", both_turned),
+        replaced(world_mod.World, "perceived_gravity", turned),
+        replaced(world_mod.World, "perceived_up", turned),
+        replaced(world_mod.World, "perceived_up_and_gravity", both_turned),
     ):
         yield
 

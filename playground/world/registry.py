@@ -2,12 +2,12 @@
 putting them to sleep.
 
 :class:`BodyRegistry` is the part of :class:`~playground.world.world.World` that keeps the space
-and the names of its bodies; the world learns of each change through :meth:`BodyRegistry._added`
-and :meth:`BodyRegistry._removed` (its stages follow: gravity registry, tracking, movers). Nothing
-outside the world adds to or removes from its space.
+and the names of its bodies; the world learns of each change through the ``added`` and
+``removed`` callbacks it passes in (its stages follow: gravity registry, tracking, movers). A body
+added straight to the space (``space.add``) is unnamed until :meth:`BodyRegistry.adopt` names it.
 
 While the world is *locked* (from its gravity stage to the end of a step, see
-:attr:`BodyRegistry.locked`), bodies and static shapes added or removed by a hook join or leave
+:meth:`BodyRegistry.lock`), bodies and static shapes added or removed by a hook join or leave
 when the step ends, as pymunk and Box2D defer changes made from inside their step: every stage of
 one step sees the same bodies. A joint is added or removed at once (the world keeps nothing per
 step about joints, and a controller's grab acts in the step it grabs) unless one of its bodies is
@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Self
 
 import pymunk
 
@@ -50,16 +49,33 @@ from playground.world.errors import WorldUsageError
 __all__ = ["BodyRegistry"]
 
 
-class BodyRegistry:
-    """A pymunk space and its bodies by name (unique names; unnamed static shapes allowed)."""
+def _nothing(body: pymunk.Body) -> None:
+    """A change nobody follows."""
 
-    def __init__(self) -> None:
+
+class BodyRegistry:
+    """A pymunk space and its bodies by name (unique names; unnamed static shapes allowed).
+
+    ``added(body)`` runs after a named body joined (or was adopted), ``removed(body)`` after one
+    left the registry while it is still in the space.
+    """
+
+    def __init__(
+        self,
+        added: Callable[[pymunk.Body], None] = _nothing,
+        removed: Callable[[pymunk.Body], None] = _nothing,
+    ) -> None:
         self.space = pymunk.Space()
-        self._bodies: dict[str, pymunk.Body] = {}
+        self._added = added
+        self._removed = removed
+        self.by_name: dict[str, pymunk.Body] = {}
+        """The named bodies (the dict itself, shared with the gravity stage: read it only)."""
         # Each body's id by name: ``body.id`` is a call into chipmunk, and controllers look up
         # their rule and tracked row by name every step.
-        self._ids: dict[str, int] = {}
-        self._names: dict[int, str] = {}
+        self.id_by_name: dict[str, int] = {}
+        """Each named body's ``body.id`` (read it only)."""
+        self.name_by_id: dict[int, str] = {}
+        """Each named body's name by ``body.id`` (read it only)."""
         self._locked = False
         # What a hook changed while the world was locked, in call order, run at the step's end;
         # the names and the bodies and joints waiting to join, and the names about to leave.
@@ -73,30 +89,37 @@ class BodyRegistry:
         shapes, tracking and hooks added or removed wait for the step's end."""
         return self._locked
 
+    def lock(self) -> None:
+        """The step's locked part begins: changes wait until :meth:`unlock` and
+        :meth:`run_pending`."""
+        self._locked = True
+
+    def unlock(self) -> None:
+        """The step's locked part ends (the changes asked for meanwhile are still pending)."""
+        self._locked = False
+
+    def run_pending(self) -> None:
+        """Make the changes asked for while locked, in order."""
+        if self._pending:
+            pending, self._pending = self._pending, []
+            for change in pending:
+                change()
+
     def _defer(self, change: Callable[[], object]) -> None:
         self._pending.append(change)
 
-    def later(self, action: Callable[[Self], object]) -> None:
-        """Run ``action(world)`` when the step ends, after the changes asked for before it (at
-        once if the world is not :attr:`locked`): for a change the world does not defer itself,
-        such as building a controller from a hook."""
+    def later(self, change: Callable[[], object]) -> None:
+        """Run ``change()`` when the step ends, after the changes asked for before it (at once
+        if the registry is not :attr:`locked`)."""
         if self._locked:
-            self._defer(lambda: action(self))
+            self._defer(change)
         else:
-            action(self)
-
-    def _run_pending(self) -> None:
-        """Make the changes a hook asked for while the world was locked, in order."""
-        pending, self._pending = self._pending, []
-        for change in pending:
             change()
 
-    def _added(self, body: pymunk.Body) -> None:
-        """A named body joined the space (the world's stages follow)."""
-
-    def _removed(self, body: pymunk.Body) -> None:
-        """A named body left the registry; it is still in the space (the world's stages
-        follow)."""
+    def require(self, name: str) -> None:
+        """KeyError naming the known bodies unless ``name`` is a body's, or one waiting to join."""
+        if name not in self._arriving:
+            self.body(name)
 
     def add(self, name: str, body: pymunk.Body, *shapes: pymunk.Shape) -> pymunk.Body:
         """Add a named body and its shapes. Names are unique.
@@ -107,7 +130,7 @@ class BodyRegistry:
         """
         if not isinstance(name, str) or not name:
             raise ValueError(f"name: expected a non-empty string, got {name!r}")
-        if name in self._bodies or name in self._arriving:
+        if name in self.by_name or name in self._arriving:
             raise ValueError(f"{name}: a body with this name already exists")
         check_body(name, body, shapes)
         if self._locked:
@@ -117,11 +140,49 @@ class BodyRegistry:
             self._defer(lambda: self._join(name, body, shapes))
             return body
         self.space.add(body, *shapes)
-        self._bodies[name] = body
-        self._ids[name] = body.id
-        self._names[body.id] = name
+        self.by_name[name] = body
+        self.id_by_name[name] = body.id
+        self.name_by_id[body.id] = name
         self._added(body)
         return body
+
+    def adopt(self, name: str, body: pymunk.Body) -> pymunk.Body:
+        """Name a body that was added straight to this space (``space.add``): from then on it is
+        a body of the registry like one added with :meth:`add` (found, tracked and given a
+        gravity rule by name, removed with its shapes and joints). Names are unique; a body has
+        one name. While :attr:`locked`, the name is given when the step ends.
+
+        >>> registry = BodyRegistry()
+        >>> crate = pymunk.Body(10.0, 1.0)
+        >>> registry.space.add(crate, pymunk.Poly.create_box(crate, (1.0, 1.0)))
+        >>> registry.adopt("crate", crate) is registry.body("crate")
+        True
+        """
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"name: expected a non-empty string, got {name!r}")
+        if name in self.by_name or name in self._arriving:
+            raise ValueError(f"{name}: a body with this name already exists")
+        if not isinstance(body, pymunk.Body) or body.space is not self.space:
+            raise ValueError(
+                f"{name}: expected a body in this world's space (added with space.add), "
+                f"got {body!r}"
+            )
+        known = self.name_by_id.get(body.id)
+        if known is not None:
+            raise ValueError(f"{name}: the body is already called {known!r}")
+        if self._locked:
+            self._arriving.add(name)
+            self._defer(lambda: self._adopted(name, body))
+            return body
+        self.by_name[name] = body
+        self.id_by_name[name] = body.id
+        self.name_by_id[body.id] = name
+        self._added(body)
+        return body
+
+    def _adopted(self, name: str, body: pymunk.Body) -> None:
+        self._arriving.discard(name)
+        self.adopt(name, body)
 
     def _join(self, name: str, body: pymunk.Body, shapes: tuple[pymunk.Shape, ...]) -> None:
         self._arriving.difference_update((name, body))
@@ -133,16 +194,16 @@ class BodyRegistry:
         if isinstance(item, pymunk.Constraint):
             self._remove_constraint(item)
             return
-        if item in self._leaving or (item not in self._arriving and item not in self._bodies):
+        if item in self._leaving or (item not in self._arriving and item not in self.by_name):
             self.body(item)  # KeyError naming the known bodies
             raise KeyError(f"{item}: already removed in this step")
         if self._locked:
             self._leaving.add(item)
             self._defer(lambda: self._leave(item))
             return
-        body = self._bodies.pop(item)
-        del self._ids[item]
-        del self._names[body.id]
+        body = self.by_name.pop(item)
+        del self.id_by_name[item]
+        del self.name_by_id[body.id]
         self._removed(body)
         # Only the joints in the space: a joint made on the body but never added is not.
         joints = set(self.space.constraints).intersection(body.constraints)
@@ -205,13 +266,13 @@ class BodyRegistry:
     def body(self, name: str) -> pymunk.Body:
         """The body called ``name`` (KeyError naming the known bodies otherwise)."""
         try:
-            return self._bodies[name]
+            return self.by_name[name]
         except KeyError:
             if name in self._arriving:
                 raise KeyError(
                     f"{name}: added during this step; it joins when the step ends"
                 ) from None
-            known = ", ".join(sorted(self._bodies)) or "none"
+            known = ", ".join(sorted(self.by_name)) or "none"
             raise KeyError(f"no body named {name!r} (known: {known})") from None
 
     def body_at(self, point: Vec, radius: float = 0.0) -> str | None:
@@ -230,16 +291,18 @@ class BodyRegistry:
         info = self.space.point_query_nearest(point, max(radius, 0.0), pymunk.ShapeFilter())
         if info is None or info.shape is None or info.shape.body is None:
             return None
-        return self._names.get(info.shape.body.id)
+        return self.name_by_id.get(info.shape.body.id)
 
     def name_of(self, body: pymunk.Body) -> str | None:
-        return self._names.get(body.id)
+        """The body's name, or None for a body the registry does not know by name."""
+        return self.name_by_id.get(body.id)
 
     @property
     def names(self) -> list[str]:
-        return list(self._bodies)
+        """The names of the bodies, in the order they were added."""
+        return list(self.by_name)
 
-    def _own(self, body: pymunk.Body | str) -> pymunk.Body:
+    def own(self, body: pymunk.Body | str) -> pymunk.Body:
         """The body by name, or a body object that is in this space (``ValueError`` otherwise)."""
         if isinstance(body, str):
             return self.body(body)

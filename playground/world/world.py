@@ -3,10 +3,12 @@ stage top-down.
 
 The stages (docs/design.md §4) are named by :class:`~playground.world.schedule.Stage`; a stage the
 scene does not need is skipped without cost (uniform gravity is ``space.gravity``; no tracked
-body, no solver; no perceiver, no filter). Each stage can be timed. The world keeps the body
-registry and the step; the gravity stage (:mod:`~playground.world.gravity_stage`), the physics
-stage (:mod:`~playground.world.physics`) and the schedule (:mod:`~playground.world.schedule`)
-are parts of their own.
+body, no solver; no perceiver, no filter). Each stage can be timed. The world keeps the step
+and the plan, and holds its parts, each of its own module, delegating to them: the named bodies
+(:mod:`~playground.world.registry`), the schedule (:mod:`~playground.world.schedule`), the
+gravity stage (:mod:`~playground.world.gravity_stage`), the forces put on bodies
+(:mod:`~playground.world.force_input`, into the ledger) and the physics stage with the tracked
+bodies (:mod:`~playground.world.physics`).
 
 >>> world = World()
 >>> box = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.5))
@@ -23,11 +25,13 @@ import dataclasses
 import math
 import time
 from collections.abc import Callable, Sequence
+from typing import Literal
 
 import pymunk
 import pymunk.batch as batch
 
-from playground.forces.ledger import ForceLedger
+from playground.forces.ledger import Category, ForceLedger
+from playground.forces.readings import BodyForces, TrackedReadings
 from playground.forces.tracked import SCALAR_MAX_BODIES
 from playground.gravity import GravityField, GravityRule, Perception, Uniform
 from playground.limits import (
@@ -43,10 +47,11 @@ from playground.params import bounded_vec, in_range
 from playground.vec import Vec
 from playground.world.config import WorldConfig
 from playground.world.errors import WorldUsageError
-from playground.world.force_api import ForceAPI
+from playground.world.force_input import ForceInput
 from playground.world.gravity_stage import GravityStage
 from playground.world.guard import FORCE_COLUMNS, GUARD_EVERY, RunawayError, state_runaway
 from playground.world.physics import PhysicsStage
+from playground.world.registry import BodyRegistry
 from playground.world.schedule import (
     EVENT_EARLY,
     Hook,
@@ -67,7 +72,7 @@ _NEVER = 2**62
 """A step number no run reaches: the guard's next check when the guard is off."""
 
 
-class World(ForceAPI):
+class World:
     """A pymunk space in SI units, stepped at a fixed dt through the stages of :class:`Stage`.
 
     Bodies are added by name (:meth:`add`); the world registers masses for per-body gravity and
@@ -92,8 +97,11 @@ class World(ForceAPI):
         config: WorldConfig | None = None,
         gravity: GravityField | Sequence[float] | None = None,
     ) -> None:
-        super().__init__()
         self._config = config if config is not None else WorldConfig()
+        self._registry = BodyRegistry(added=self._added, removed=self._removed)
+        self.space: pymunk.Space = self._registry.space
+        """The pymunk space (m, kg, s). A body added to it straight (``space.add``) acts like
+        any other; :meth:`adopt` names it, :meth:`track` tracks it."""
         # Chipmunk keeps an arbiter 3 steps after its contact ends by default; a contact made
         # again from it starts from the old accumulated impulse without applying it, so the
         # arbiter reports an impulse the bodies never received (see ForceSolver). Dropping
@@ -111,13 +119,16 @@ class World(ForceAPI):
         self._epoch = (0, 0.0)  # (steps, time) when dt last changed
         self.steps = 0
         self.ledger = ForceLedger(on_first=self._ledger_filled)
+        """The forces put on bodies for the coming step, by category (emptied by each step)."""
+        self._forces_in = ForceInput(self.ledger, self._registry.own, self._config.guard)
         self._scalar_max_bodies = SCALAR_MAX_BODIES
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._movers: list[Mover] = []
         self._stepping = False
         self._schedule = Schedule(self._replan)
+        registry = self._registry
         self._gravity = GravityStage(
-            self.space, self._bodies, self._names, self.ledger, self._replan
+            self.space, registry.by_name, registry.name_by_id, self.ledger, self._replan
         )
         self._physics = PhysicsStage(
             self.space, self._config, self.ledger, self._replan, self._up_at
@@ -149,6 +160,7 @@ class World(ForceAPI):
         self.space.collision_slop = config.collision_slop
         self.space.sleep_time_threshold = config.sleep_time
         self._physics.configure(config)
+        self._forces_in.guard = config.guard
         self._guard_next = self.steps + GUARD_EVERY if config.guard else _NEVER
         self._replan()
 
@@ -246,7 +258,7 @@ class World(ForceAPI):
     def gravity_rule(self, name: str) -> GravityRule:
         """The body's rule (the default rule if it has none)."""
         self.body(name)  # KeyError naming the known bodies
-        return self._gravity.rule(self._ids[name])
+        return self._gravity.rule(self._registry.id_by_name[name])
 
     def gravity_at(self, name: str) -> Vec:
         """The gravity this body feels now (field and rule), m/s²."""
@@ -258,12 +270,263 @@ class World(ForceAPI):
         n = math.hypot(*g)
         return (-g[0] / n, -g[1] / n) if n > 0 else (0.0, 1.0)
 
-    # -- bodies ----------------------------------------------------------------------------------
+    # -- bodies (the registry) -------------------------------------------------------------------
+
+    @property
+    def locked(self) -> bool:
+        """Whether the world is inside a step (from its gravity stage on): then bodies, static
+        shapes, tracking and hooks added or removed wait for the step's end."""
+        return self._registry.locked
+
+    def later(self, action: Callable[[World], object]) -> None:
+        """Run ``action(world)`` when the step ends, after the changes asked for before it (at
+        once if the world is not :attr:`locked`): for a change the world does not defer itself,
+        such as building a controller from a hook."""
+        self._registry.later(lambda: action(self))
+
+    def add(self, name: str, body: pymunk.Body, *shapes: pymunk.Shape) -> pymunk.Body:
+        """Add a named body and its shapes (see :meth:`BodyRegistry.add
+        <playground.world.registry.BodyRegistry.add>`: names are unique, values are checked
+        against :mod:`playground.limits`)."""
+        return self._registry.add(name, body, *shapes)
+
+    def adopt(self, name: str, body: pymunk.Body) -> pymunk.Body:
+        """Name a body the game added straight to :attr:`space` (``space.add``): from then on it
+        is a body of the world like one added with :meth:`add` (found, tracked and given a
+        gravity rule by name; a field that varies in space acts on it; :meth:`remove` takes it
+        out with its shapes and joints)."""
+        return self._registry.adopt(name, body)
+
+    def remove(self, item: str | pymunk.Constraint) -> None:
+        """Remove a body by name, with its shapes and joints, and stop tracking it; or remove a
+        joint added with :meth:`add_constraint`."""
+        self._registry.remove(item)
+
+    def add_constraint(self, constraint: pymunk.Constraint) -> pymunk.Constraint:
+        """Add a joint between bodies of this world (or the space's static body)."""
+        return self._registry.add_constraint(constraint)
+
+    def add_static(self, *shapes: pymunk.Shape) -> None:
+        """Add shapes of the space's static body: fixed geometry (m), checked like a body's."""
+        self._registry.add_static(*shapes)
+
+    def add_box(
+        self,
+        name: str,
+        *,
+        mass: float,
+        size: Vec,
+        position: Vec,
+        angle: float = 0.0,
+        friction: float = 0.8,
+        elasticity: float = 0.0,
+    ) -> pymunk.Body:
+        """A dynamic box of ``size`` (w, h in m) and ``mass`` (kg) at ``position`` (m), turned
+        by ``angle`` (rad)."""
+        return self._registry.add_box(
+            name,
+            mass=mass,
+            size=size,
+            position=position,
+            angle=angle,
+            friction=friction,
+            elasticity=elasticity,
+        )
+
+    def add_static_segment(
+        self,
+        a: Vec,
+        b: Vec,
+        radius: float = 0.05,
+        *,
+        friction: float = 1.0,
+        elasticity: float = 0.0,
+    ) -> pymunk.Segment:
+        """A static segment from ``a`` to ``b`` (m), ``radius`` thick (m)."""
+        return self._registry.add_static_segment(
+            a, b, radius, friction=friction, elasticity=elasticity
+        )
+
+    def body(self, name: str) -> pymunk.Body:
+        """The body called ``name`` (KeyError naming the known bodies otherwise)."""
+        return self._registry.body(name)
+
+    def body_at(self, point: Vec, radius: float = 0.0) -> str | None:
+        """The named body with a shape at world ``point`` (m) or within ``radius`` (m) of it (the
+        nearest if several), or None (unnamed bodies such as static ground do not count)."""
+        return self._registry.body_at(point, radius)
+
+    def name_of(self, body: pymunk.Body) -> str | None:
+        """The body's name, or None for a body the world does not know by name."""
+        return self._registry.name_of(body)
+
+    @property
+    def names(self) -> list[str]:
+        """The names of the bodies, in the order they were added."""
+        return self._registry.names
+
+    def sleep(self, name: str) -> None:
+        """Put a body to sleep now, with every dynamic body it touches or is jointed to (see
+        :meth:`BodyRegistry.sleep <playground.world.registry.BodyRegistry.sleep>`)."""
+        self._registry.sleep(name)
+
+    def wake(self, name: str) -> None:
+        """Wake a sleeping body and its group (nothing happens to an awake one)."""
+        self._registry.wake(name)
+
+    # -- forces in (the ledger) ------------------------------------------------------------------
+
+    def apply_force(
+        self,
+        body: pymunk.Body | str,
+        force: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Apply ``force`` (N, world frame) at world ``point`` (m; default: the centre of
+        gravity) during the coming step."""
+        self._forces_in.apply_force(body, force, point=point, category=category)
+
+    def apply_forces(
+        self,
+        body: pymunk.Body,
+        forces: list[tuple[float, float, Category]],
+        torque: float | None = None,
+        *,
+        point: Vec | None = None,
+    ) -> None:
+        """Apply several forces ``(fx, fy, category)`` (N, world frame, at world ``point``, m;
+        default: the centre of gravity) and a pure ``torque`` (N·m, counter-clockwise) to one
+        body of this world during the coming step: one call and one check of each, for a
+        controller's forces on its own body and their reactions on its ground; the totals are
+        those of one :meth:`apply_force` call each, in order, then one :meth:`apply_torque`,
+        bit for bit."""
+        self._forces_in.apply_forces(body, forces, torque, point=point)
+
+    def apply_torque(
+        self, body: pymunk.Body | str, torque: float, *, category: Category = Category.APPLIED
+    ) -> None:
+        """Apply a pure ``torque`` (N·m, counter-clockwise) during the coming step."""
+        self._forces_in.apply_torque(body, torque, category=category)
+
+    def apply_impulse(
+        self,
+        body: pymunk.Body | str,
+        impulse: Vec,
+        *,
+        point: Vec | None = None,
+        category: Category = Category.APPLIED,
+    ) -> None:
+        """Apply ``impulse`` (N·s) spread over the coming step, as the force impulse/dt."""
+        self._forces_in.apply_impulse(
+            body, impulse, self._config.dt, point=point, category=category
+        )
+
+    # -- the tracked bodies (the physics stage's) ------------------------------------------------
+
+    def track(self, *bodies: str | pymunk.Body, perceive: bool = True) -> None:
+        """Recover engine forces for these dynamic bodies every step, by name or as bodies of
+        :attr:`space` (a body the game added with ``space.add`` too, named or not);
+        ``perceive`` also filters their perceived gravity. From the next step on if the world
+        is :attr:`locked`."""
+        registry = self._registry
+        for item in bodies:
+            if isinstance(item, str):
+                registry.require(item)  # KeyError naming the known bodies, now
+            else:
+                self._in_space(item)
+        if registry.locked:
+            registry.later(lambda: self.track(*bodies, perceive=perceive))
+            return
+        tracked = self._physics.tracked
+        for item in bodies:
+            tracked.track(registry.body(item) if isinstance(item, str) else item, perceive)
+
+    def untrack(self, *bodies: str | pymunk.Body) -> None:
+        """Stop tracking these bodies (by name or as bodies; one not tracked is left alone): for
+        a body the game is about to take out of :attr:`space` itself. From the next step on if
+        the world is :attr:`locked`."""
+        registry = self._registry
+        items = [registry.body(b) if isinstance(b, str) else self._in_space(b) for b in bodies]
+        if registry.locked:
+            registry.later(lambda: self.untrack(*items))
+            return
+        tracked = self._physics.tracked
+        for body in items:
+            if tracked.row_of(body) is not None:
+                tracked.untrack(body)
+
+    def _in_space(self, body: object) -> pymunk.Body:
+        """``body`` if it is a dynamic body of :attr:`space` (``ValueError`` otherwise)."""
+        if not isinstance(body, pymunk.Body) or body.space is not self.space:
+            raise ValueError(f"body: expected a body name or a body of this world, got {body!r}")
+        if body.body_type != pymunk.Body.DYNAMIC:
+            raise ValueError(f"{body!r}: only dynamic bodies have engine forces to recover")
+        return body
+
+    @property
+    def tracked_bodies(self) -> list[pymunk.Body]:
+        """The tracked bodies, in the order they were tracked (a copy)."""
+        return list(self._physics.tracked.bodies)
+
+    def is_tracked(self, name: str) -> bool:
+        """Whether the body ``name`` is tracked (KeyError naming the known bodies if there is
+        no such body)."""
+        registry = self._registry
+        body = registry.body(name)
+        return self._physics.tracked.row_of(body, registry.id_by_name[name]) is not None
+
+    def readings(self) -> TrackedReadings:
+        """Every tracked body's last readings and perceived gravity, as arrays (copies), one row
+        each in :attr:`tracked_bodies` order."""
+        return self._physics.tracked.active.table()
+
+    @property
+    def tracked_kind(self) -> Literal["scalar", "batch"]:
+        """Which implementation serves the tracked bodies in the coming steps, as last planned:
+        ``"scalar"`` (plain floats, for few bodies) or ``"batch"`` (numpy and
+        ``pymunk.batch``, for many). Benchmarks report it; nothing else needs it."""
+        return self._physics.tracked.active.kind
+
+    def forces(self, body: str | pymunk.Body) -> BodyForces:
+        """The last readings of a tracked body (by name, or the body)."""
+        return self._physics.tracked.active.reading(self._tracked_row(body))
+
+    def perceived_gravity(self, body: str | pymunk.Body) -> Vec:
+        """The filtered perceived gravity of a tracked body (by name, or the body), m/s²."""
+        return self._physics.tracked.active.perceived_gravity(self._tracked_row(body))
+
+    def perceived_up(self, body: str | pymunk.Body) -> Vec:
+        """Unit vector opposite the perceived gravity, held through weak readings."""
+        return self._physics.tracked.active.perceived_up(self._tracked_row(body))
+
+    def perceived_up_and_gravity(self, body: str | pymunk.Body) -> tuple[Vec, Vec]:
+        """:meth:`perceived_up` and :meth:`perceived_gravity` of a tracked body in one call (a
+        controller reads both every step; the row is looked up once)."""
+        row = self._tracked_row(body)
+        return self._physics.tracked.active.perceived_up_and_gravity(row)
+
+    def _tracked_row(self, item: str | pymunk.Body) -> int:
+        if type(item) is str:
+            registry = self._registry
+            row = self._physics.tracked.row_of(registry.body(item), registry.id_by_name[item])
+        elif isinstance(item, pymunk.Body):
+            row = self._physics.tracked.row_of(item)
+        else:
+            raise ValueError(f"body: expected a body name or a body of this world, got {item!r}")
+        if row is None:
+            raise KeyError(f"{item}: not tracked (call world.track({item!r}) first)")
+        return row
+
+    # -- the world's own bookkeeping of bodies -------------------------------------------------
 
     def _added(self, body: pymunk.Body) -> None:
+        """A named body joined (the registry calls this)."""
         self._gravity.bodies_changed()
 
     def _removed(self, body: pymunk.Body) -> None:
+        """A named body left the registry, still in the space (the registry calls this)."""
         self._gravity.forget(body.id)
         tracked = self._physics.tracked
         if tracked.row_of(body) is not None:
@@ -300,10 +563,7 @@ class World(ForceAPI):
         """Run ``hook(world)`` every step in ``stage`` (INPUTS, EVENTS, CONTROL or OBSERVE); from
         the next step on if the world is :attr:`locked`."""
         self._schedule.check(stage)
-        if self._locked:
-            self._defer(lambda: self._schedule.on(stage, hook))
-        else:
-            self._schedule.on(stage, hook)
+        self._registry.later(lambda: self._schedule.on(stage, hook))
 
     def off(self, stage: Stage, hook: Hook) -> None:
         """Stop running ``hook`` in ``stage``: the opposite of :meth:`on`. Safe from inside a
@@ -344,6 +604,7 @@ class World(ForceAPI):
         gravity = self._gravity
         physics = self._physics
         tracked = physics.tracked
+        registry = self._registry
         # A bare step runs no hook, so only this path can be entered again from inside.
         self._stepping = True
         try:
@@ -363,7 +624,7 @@ class World(ForceAPI):
                 self._plan()
             # From here to the step's end the world is locked: what a hook adds or removes waits
             # for the end, so every stage of this step sees the same bodies.
-            self._locked = True
+            registry.lock()
             # 3. gravity: space.gravity for a uniform field, per-body forces for anything else
             field = None
             if gravity.active:
@@ -408,10 +669,9 @@ class World(ForceAPI):
                 run_hooks(schedule.observers, self)
                 lap(OBSERVE)
         finally:
-            self._locked = False
+            registry.unlock()
             self._stepping = False
-        if self._pending:
-            self._run_pending()
+        registry.run_pending()
 
     def run(self, seconds: float) -> None:
         """Step for ``seconds`` of simulated time (rounded to whole steps)."""
@@ -452,7 +712,7 @@ class World(ForceAPI):
     def _runaway(
         self, body_id: int, column: tuple[str, str, str], value: float, bound: float
     ) -> None:
-        name = self._names.get(body_id)
+        name = self._registry.name_by_id.get(body_id)
         who = repr(name) if name is not None else f"an unnamed body (id {body_id})"
         raise RunawayError(who, self.steps, self.time, column, value, float(bound))
 

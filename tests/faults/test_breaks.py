@@ -10,13 +10,12 @@ from playground import controller, faults, movers, world
 from playground.controller import switches
 from playground.gravity import perception
 from playground.level import find, load
-from playground.world import force_api, gravity_stage
+from playground.world import gravity_stage
 
 PATCHED = (
     controller.Controller,
     controller.ControllerConfig,
     world.World,
-    force_api.ForceAPI,
     gravity_stage.GravityStage,
     movers.Mover,
     movers.Spin,

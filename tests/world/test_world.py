@@ -234,3 +234,75 @@ def test_resting_bodies_sleep_with_substeps() -> None:
     world = sleepy_world(WorldConfig(sleep_time=0.2, substeps=3))
     world.run(1.5)
     assert world.body("box").is_sleeping
+
+
+def test_the_world_is_composed_not_inherited() -> None:
+    """Law: World derives from nothing but object; it holds its parts (registry, schedule,
+    gravity stage, forces in, physics stage) and every public name of the registry is World's
+    too, delegated."""
+    from playground.world.force_input import ForceInput
+    from playground.world.gravity_stage import GravityStage
+    from playground.world.registry import BodyRegistry
+    from playground.world.schedule import Schedule
+
+    assert World.__mro__ == (World, object)
+    world = World()
+    parts = {type(v) for v in vars(world).values()}
+    for part in (BodyRegistry, Schedule, GravityStage, ForceInput, PhysicsStage):
+        assert part in parts, part
+    public = {n for n in dir(BodyRegistry) if not n.startswith("_")}
+    kept = {"by_name", "id_by_name", "name_by_id", "own", "require", "lock", "unlock"}
+    missing = public - kept - {"run_pending"} - set(dir(World))
+    assert not missing, missing
+
+
+def _crate_on_the_floor(world: World) -> pymunk.Body:
+    """A 10 kg crate added straight to the world's space, resting on a floor added likewise."""
+    floor = pymunk.Segment(world.space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.05)
+    crate = pymunk.Body(10.0, pymunk.moment_for_box(10.0, (1.0, 1.0)))
+    crate.position = (0.0, 0.55)
+    world.space.add(floor, crate, pymunk.Poly.create_box(crate, (1.0, 1.0)))
+    return crate
+
+
+TOL_REST = 1e-6
+"""Relative: a box at rest on the floor for a second reads its weight to rounding."""
+
+
+@pytest.mark.parametrize("named", [False, True])
+def test_a_body_the_game_added_itself_can_be_tracked(named: bool) -> None:
+    """Law: a body added with ``world.space.add`` is tracked like one of the world's, named by
+    ``adopt`` or anonymous (read by the body itself): a 10 kg crate at rest reads its weight,
+    98.1 N, and perceives g; untracked, its readings are refused by name."""
+    world = World()
+    crate = _crate_on_the_floor(world)
+    key: str | pymunk.Body = crate
+    if named:
+        world.adopt("crate", crate)
+        key = "crate"
+        assert world.body("crate") is crate and world.names == ["crate"]
+    world.track(key)
+    world.run(1.0)
+    assert world.tracked_bodies == [crate]
+    support = world.forces(key).support
+    assert support[1] == pytest.approx(98.1, rel=TOL_REST) and abs(support[0]) < 1e-9
+    assert world.perceived_gravity(key) == pytest.approx((0.0, -9.81), rel=TOL_REST, abs=1e-9)
+    world.untrack(key)
+    assert world.tracked_bodies == []
+    with pytest.raises(KeyError, match="not tracked"):
+        world.forces(key)
+
+
+def test_a_body_of_another_space_is_refused_by_track_and_adopt() -> None:
+    """Law: ``track`` and ``adopt`` refuse a body that is not in the world's space, and
+    ``adopt`` a second name, saying why."""
+    world = World()
+    stranger = pymunk.Body(1.0, 1.0)
+    with pytest.raises(ValueError, match="body of this world"):
+        world.track(stranger)
+    with pytest.raises(ValueError, match=r"space\.add"):
+        world.adopt("stranger", stranger)
+    crate = _crate_on_the_floor(world)
+    world.adopt("crate", crate)
+    with pytest.raises(ValueError, match="already called 'crate'"):
+        world.adopt("box", crate)
