@@ -7,7 +7,8 @@ The distribution is ``pymunk-playground``; the package and the command are ``pla
 from playground.controller import Controller, ControllerConfig, ControllerForces, GroundHit, State
 from playground.fixed_step import FixedStep, FrameSteps
 from playground.forces.ledger import Category, ForceLedger
-from playground.forces.readings import BodyForces
+from playground.forces.readings import BodyForces, TrackedReadings
+from playground.forces.sensor import ForceSensor
 from playground.forces.solver import ForceSolver
 from playground.gameplay import (
     Crushed,
@@ -53,6 +54,7 @@ __all__ = [
     "Elevator",
     "FixedStep",
     "ForceLedger",
+    "ForceSensor",
     "ForceSolver",
     "FrameSteps",
     "Freed",
@@ -82,6 +84,7 @@ __all__ = [
     "Stage",
     "StageTiming",
     "State",
+    "TrackedReadings",
     "Turn",
     "Uniform",
     "Waypoints",

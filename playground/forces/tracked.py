@@ -51,16 +51,11 @@ UpAt = Callable[[pymunk.Body], Vec]
 
 
 class Settings(Protocol):
-    """What the tracked bodies read of the world's settings (see
-    :class:`~playground.world.WorldConfig`): step length s, substeps, damping, contact split,
-    sleep time s, perception."""
+    """What the tracked bodies read of their owner's settings when they are built (see
+    :class:`~playground.world.WorldConfig`): the contact split, the sleep time (s; ∞: bodies
+    never sleep) and the perception; the step's length, substeps and damping come with each
+    step."""
 
-    @property
-    def dt(self) -> float: ...
-    @property
-    def substeps(self) -> int: ...
-    @property
-    def damping(self) -> float: ...
     @property
     def contact_split(self) -> bool: ...
     @property
