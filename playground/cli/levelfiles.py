@@ -12,6 +12,7 @@ import argparse
 import json
 import sys
 from pathlib import Path
+from typing import Any
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK
 from playground.cli.preflight import writable
@@ -69,8 +70,11 @@ def cmd_check(args: argparse.Namespace) -> int:
         try:
             path = find(item)
             level = load_checked(path)
-            build(level, str(path))
+            scene = build(level, str(path))
             print(f"ok      {item}: {level.title}")
+            note = _long_run(scene.world.space, level)
+            if note:
+                print(f"note    {item}: {note}")
         except LevelError as exc:
             failed = True
             where = f" (line {exc.line}, column {exc.column})" if exc.line is not None else ""
@@ -78,6 +82,28 @@ def cmd_check(args: argparse.Namespace) -> int:
             for problem in exc.problems:
                 print(f"  {problem}", file=sys.stderr)
     return EXIT_FAILED if failed else EXIT_OK
+
+
+SECONDS_PER_BODY_STEP = 1e-6
+"""s: about the least a step costs per body (docs/performance.md: the N = 1000 pile)."""
+LONG_RUN_BODY_STEPS = 1e9
+"""Bodies × steps above which ``check`` says a run will be long (a quarter of an hour or more at
+:data:`SECONDS_PER_BODY_STEP`)."""
+
+
+def _long_run(space: Any, level: Level) -> str:
+    """A note when the level's run steps so many bodies so many times that it will be long."""
+    bodies = max(1, len(space.bodies))
+    steps = round(level.settings.seconds / level.settings.dt)
+    work = bodies * steps
+    if work <= LONG_RUN_BODY_STEPS:
+        return ""
+    minutes = work * SECONDS_PER_BODY_STEP / 60.0
+    return (
+        f"{bodies} bodies for {steps} steps ({work:.2g} body-steps): at a microsecond or more "
+        f"per body and step, the run takes {minutes:.0f} minutes or more; shorten "
+        "settings.seconds or use fewer bodies"
+    )
 
 
 def cmd_schema(args: argparse.Namespace) -> int:

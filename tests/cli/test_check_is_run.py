@@ -75,6 +75,10 @@ CASES = {
         PLAYER + REMOVE.format(t=0.5, body="crate") + '[[inputs]]\nt = 1.0\nnullify = "crate"\n',
         "inputs.0.nullify: 'crate' was removed",
     ),
+    "spawned prop with a tiny moment": (
+        SPAWN.format(mass=1.0, shape='{ kind = "box", size = [1e-6, 1e-6] }'),
+        "events.0.prop: p.moment: expected a number in [1e-09",
+    ),
     "spawned prop with no area": (
         SPAWN.format(
             mass=1.0, shape='{ kind = "polygon", points = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]] }'
@@ -146,3 +150,27 @@ def test_a_build_refusal_names_the_file(tmp_path: Path, capsys: pytest.CaptureFi
     assert main(["check", str(path)]) == EXIT_FAILED
     err = capsys.readouterr().err
     assert f"FAILED  {path}" in err and "joints.0.stiffness" in err
+
+
+def test_check_says_when_a_run_will_be_long(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A level that is valid but steps many bodies for very many steps (32 bodies for an hour
+    at dt = 1e-4 s: 1.2e9 body-steps; the issue's 10 000 bodies for an hour would take ~17 h)
+    passes check with a note saying so, not silently; the base level gets no note."""
+    crates = "".join(
+        f'[[props]]\nname = "c{k}"\nposition = [{k - 15}.0, 3.0]\nmass = 1.0\n'
+        'shapes = [{ kind = "circle", radius = 0.3 }]\n'
+        for k in range(29)
+    )
+    path = tmp_path / "long.toml"
+    settings = 'description = "d"\n[settings]\nseconds = 3600.0\ndt = 0.0001'
+    text = BASE.replace('description = "A crate, a lift and the floor."', settings)
+    path.write_text(text + crates, "utf-8")
+    assert main(["check", str(path)]) == EXIT_OK
+    out = capsys.readouterr().out
+    assert "note" in out and "body-steps" in out and "minutes or more" in out
+    base = tmp_path / "base.toml"
+    base.write_text(BASE, encoding="utf-8")
+    assert main(["check", str(base)]) == EXIT_OK
+    assert "note" not in capsys.readouterr().out
