@@ -100,7 +100,13 @@ def test_wheel_holds_none_of_the_repositorys_tools(wheel: Path) -> None:
         "__main__.py",
         "cli.py",
     }
-    assert {"goals.py", "performance_page.py", "accuracy_page.py", "guide.py"} <= pages
+    assert {
+        "goals.py",
+        "performance_page.py",
+        "accuracy_page.py",
+        "guide.py",
+        "stability.py",
+    } <= pages
     bench = {
         n.removeprefix("playground/bench/") for n in names if n.startswith("playground/bench/")
     }

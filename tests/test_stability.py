@@ -1,7 +1,7 @@
 """Stability: hard scenes × dt × solver iterations keep every invariant, every step.
 
-The scenes and the invariants live in :mod:`playground.bench.stability` (the stability chapter
-draws the same matrix); :func:`~playground.bench.stability.run_checked` raises an
+The scenes and the invariants live in :mod:`tools.stability` (the stability chapter
+draws the same matrix); :func:`~tools.stability.run_checked` raises an
 ``InvariantError`` (an AssertionError) naming the step and the invariant at the first breach.
 """
 
@@ -11,10 +11,10 @@ import math
 
 import pytest
 
-from playground.bench.stability import SCENES, check_budgets, run_checked
 from playground.controller import Controller, ControllerConfig
 from playground.intents import Idle, Intent, Script
 from playground.world import World, WorldConfig
+from tools.stability import SCENES, check_budgets, run_checked
 
 DTS = (1 / 60, 1 / 240)
 """Steps of the matrix, s: a coarse game rate and a fine one."""

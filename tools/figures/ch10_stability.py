@@ -46,10 +46,10 @@ class HardOutcome:
 @cache
 def hard_run(scene: str, dt: float, iterations: int = 10, substeps: int = 1) -> HardOutcome:
     """Run the hard scene ``scene`` with every invariant checked (see
-    :mod:`playground.bench.stability`); the runtime guard's stop counts as a breach too."""
-    from playground.bench.stability import SCENES as HARD
-    from playground.bench.stability import InvariantError, run_checked
+    :mod:`tools.stability`); the runtime guard's stop counts as a breach too."""
     from playground.world.guard import RunawayError
+    from tools.stability import SCENES as HARD
+    from tools.stability import InvariantError, run_checked
 
     hard = HARD[scene](WorldConfig(dt=dt, iterations=iterations, substeps=substeps))
     try:
@@ -63,7 +63,7 @@ def hard_run(scene: str, dt: float, iterations: int = 10, substeps: int = 1) -> 
 
 def hard_scenes() -> tuple[str, ...]:
     """The hard scenes' names, in the stability suite's order."""
-    from playground.bench.stability import SCENES as HARD
+    from tools.stability import SCENES as HARD
 
     return tuple(HARD)
 
@@ -156,7 +156,7 @@ THIN_WALL_DT = 1 / 30
 @cache
 def thin_ring_outcome() -> HardOutcome:
     """The hard spinning ring at THIN_WALL_DT, 10 iterations, with ring_room's default wall."""
-    from playground.bench import stability
+    from tools import stability
 
     saved = stability.RING_WALL
     stability.RING_WALL = THIN_WALL
