@@ -167,3 +167,17 @@ def test_every_public_name_an_example_uses_has_a_runnable_example() -> None:
     assert {"Controller", "World", "FixedStep"} <= used
     missing = [n for n in sorted(used) if ">>>" not in (getattr(playground, n).__doc__ or "")]
     assert not missing, missing
+
+
+TOL_SUPPORT_N = 1e-6
+"""N: a crate at rest reads its weight to the solver's rounding (the README's 98.1 to 6 places)."""
+
+
+def test_the_crate_reads_its_weight_with_the_solver_alone() -> None:
+    """A 10 kg crate on a plain pymunk space, read by ForceSensor: 98.1 N once at rest; more
+    while it lands."""
+    crate = example("crate")
+    trace = crate.main(frames=180)
+    assert max(fy for _fx, fy in trace[:60]) > 2 * crate.MASS * 9.81  # N: the landing
+    for fx, fy in trace[120:]:  # s 2–3: at rest
+        assert abs(fx) < TOL_SUPPORT_N and abs(fy - 98.1) < TOL_SUPPORT_N
