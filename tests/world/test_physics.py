@@ -1,5 +1,6 @@
-"""Laws of the physics stage: the path that serves the tracked bodies is chosen by their count
-and the scene, the state moves with a switch, and a runaway reading is reported with its body."""
+"""Laws of the physics stage: the implementation that serves the tracked bodies is chosen by their
+count and the scene, the state moves with a switch, and a runaway reading is reported with its
+body."""
 
 from __future__ import annotations
 
@@ -38,19 +39,20 @@ def _pile(n: int, config: WorldConfig | None = None) -> World:
         (30, WorldConfig(), False),
     ],
 )
-def test_the_path_follows_the_count_and_the_scene(
+def test_the_implementation_follows_the_count_and_the_scene(
     n: int, config: WorldConfig, scalar: bool
 ) -> None:
     """Law: few tracked bodies are served in plain floats, contact split, sleeping and substeps
-    included; more than ``scalar_max_bodies`` take the batch path."""
+    included; more than ``scalar_max_bodies`` are served by the batch implementation."""
     world = _pile(n, config)
     world.step()
     assert (world.tracked_kind == "scalar") is scalar
 
 
-def test_substeps_in_a_crowded_space_take_the_batch_path() -> None:
+def test_substeps_in_a_crowded_space_are_served_by_the_batch_implementation() -> None:
     """Law: with substeps every body's force is re-applied before each substep, so a space of
-    more than ``scalar_max_bodies`` bodies takes the batch path even with few tracked."""
+    more than ``scalar_max_bodies`` bodies is served by the batch implementation, even with few
+    tracked."""
     world = _pile(3, WorldConfig(substeps=2))
     world.scalar_max_bodies = 4
     world.step()
@@ -70,10 +72,10 @@ class _Tilted:
         return np.column_stack([0.1 * points[:, 1], np.full(len(points), -9.81)])
 
 
-def test_a_field_that_varies_takes_the_scalar_path_for_few_bodies() -> None:
+def test_a_field_that_varies_is_served_in_plain_floats_for_few_bodies() -> None:
     """Law: a field that varies in space, of a kind evaluated in plain floats, keeps the scalar
-    path while the named dynamic bodies are few (tracked or not); with more, or with a field of
-    another kind, its forces are batch rows."""
+    implementation while the named dynamic bodies are few (tracked or not); with more, or with a
+    field of another kind, its forces are batch rows."""
     world = _pile(3)
     world.gravity = Radial(radius=1.0, center=(0.0, -20.0))
     world.step()
@@ -149,9 +151,9 @@ def _count_batch_calls(monkeypatch: pytest.MonkeyPatch) -> dict[str, int]:
 def test_a_field_that_varies_costs_one_batch_read_and_one_write(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    """Law: a per-body field on the batch path is evaluated at the positions of the physics
-    stage's own read (positions, velocities and forces in one batch read) and written in one
-    batch write, and the bodies fall as in the field."""
+    """Law: a per-body field under the batch implementation is evaluated at the positions of its
+    own read (positions, velocities and forces in one batch read) and written in one batch write,
+    and the bodies fall as in the field."""
     world = _untracked_pile(30, WorldConfig(guard=False))
     world.gravity = Radial(center=(0.0, -1e5), radius=1e5, softening=0.0)
     world.step()
@@ -179,9 +181,9 @@ def test_substeps_write_the_forces_again_only_when_a_body_has_one(
     assert counts == {"read": 2, "write": 2}
 
 
-def test_a_runaway_on_the_batch_path_looks_at_forces_not_torques() -> None:
-    """Law: on the batch path a quick pass over every reading (torques included) lets a sound
-    step through, and a closer look decides otherwise: a torque beyond the force bound is no
+def test_a_runaway_under_the_batch_implementation_looks_at_forces_not_torques() -> None:
+    """Law: in the batch implementation a quick pass over every reading (torques included) lets a
+    sound step through, and a closer look decides otherwise: a torque beyond the force bound is no
     runaway, an engine force beyond it is, named by its body and column."""
     world = _pile(30)
     world.scalar_max_bodies = 0
@@ -197,9 +199,9 @@ def test_a_runaway_on_the_batch_path_looks_at_forces_not_torques() -> None:
 
 
 @pytest.mark.parametrize("push", ["ledger force", "ledger torque", "straight force"])
-def test_a_field_alone_moves_bodies_as_the_full_batch_path_does(push: str) -> None:
+def test_a_field_alone_moves_bodies_as_the_full_batch_read_does(push: str) -> None:
     """Law: with nothing tracked, one substep and no sleeping, a field reads only positions and
-    forces and writes only forces; the bodies move as on the batch path that reads and writes
+    forces and writes only forces; the bodies move as with the full batch read and write of
     whole rows (one body tracked there), to the last bit, with forces and torques of the ledger
     or set straight on a body (the torques it does not write stay)."""
     worlds = [_untracked_pile(12), _untracked_pile(12)]
