@@ -30,19 +30,31 @@ __all__ = [
 
 
 LANDING_WINDOW = 0.5
-"""s: the longest a landing is followed for its peak force. The default hover (5 Hz, critically
-damped) settles within 0.2 s; a landing soft enough never to press past the weight is over too."""
+"""s: the longest a landing is followed after touchdown for the end of its fall. The default
+hover (5 Hz, critically damped) stops a fall within 0.1 s; one not stopped by then (a ground
+that falls away as fast) is reported with what was measured."""
+
+MIN_LANDING_SPEED = 0.25
+"""m/s: the slowest fall reported as a landing. Slower is the hover settling or a touchdown at
+the top of a hop (a fall of v²/2g = 3 mm), nothing a game plays a sound for."""
 
 
 @dataclass(frozen=True, slots=True)
 class Landed:
-    """Came down from the air onto walkable ground.
+    """Came down from the air onto walkable ground, and its fall was stopped.
 
-    Touchdown is the step its ground probe first finds walkable ground (``probe_length`` below
-    its centre, before the body itself touches). The event is queued once the landing's force
-    has peaked above its weight (a few steps later: the hover spring takes the fall), or
-    :data:`LANDING_WINDOW` after touchdown, or when its state changes again; so ``impact`` is
-    the whole landing's peak.
+    Touchdown is the step its ground probe first finds walkable ground after it was airborne
+    (``probe_length`` below its centre, before the body itself touches: the hover spring takes
+    the fall from there). The landing is followed until the body no longer moves toward the
+    ground, and queued then (a few steps after touchdown), or :data:`LANDING_WINDOW` after
+    touchdown, or when its state changes again. A fall slower than
+    :data:`MIN_LANDING_SPEED` is no landing (a touchdown at the top of a low hop, a player
+    built at its ride height).
+
+    ``impulse`` is the momentum its support took out of the fall: the support along up beyond
+    the weight, integrated from the moment it fell fastest to the moment it stopped, so
+    ``impulse = mass · speed`` (N·s = kg · m/s) whatever stopped it (the hover, the capsule's own
+    contact, both).
     """
 
     time: float
@@ -50,9 +62,13 @@ class Landed:
     name: str
     """The controller's body."""
     speed: float
-    """Speed toward the ground at touchdown, along up and relative to the ground, m/s."""
+    """The fastest it fell toward the ground while landing, along up and relative to the
+    ground, m/s (at touchdown, or later if the hover's first push was weaker than its weight)."""
     impact: float
     """The largest force it felt while landing (|support|), N."""
+    impulse: float
+    """The impulse that stopped the fall (support beyond the weight, along up), N·s: mass ×
+    ``speed``."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,19 +146,34 @@ GameplayEvent = Landed | LostBalance | GotUp | Crushed | Freed | Grabbed | Relea
 happened in) and the controller's ``name``."""
 
 
-class _Watch:
-    """What is known of one controller between steps: its grip, its gravity, a landing whose
-    force has not peaked yet (touchdown time, speed m/s, peak N)."""
+class _Landing:
+    """A landing being followed: its touchdown time (s), the fastest fall so far (m/s), the
+    support's impulse beyond the weight since then (N·s) and the peak support (N)."""
 
-    __slots__ = ("controller", "first", "gravity", "holding", "landing")
+    __slots__ = ("fastest", "impulse", "last", "peak", "touchdown")
+
+    def __init__(self, touchdown: float, speed: float) -> None:
+        self.touchdown = touchdown
+        self.fastest = speed
+        self.last = speed  # toward the ground after the last step followed, m/s
+        self.impulse = 0.0
+        self.peak = 0.0
+
+
+class _Watch:
+    """What is known of one controller between steps: its grip, its gravity, whether it has been
+    airborne since it last landed, and a landing whose fall has not stopped yet."""
+
+    __slots__ = ("airborne", "controller", "gravity", "holding", "landing")
 
     def __init__(self, controller: Controller, gravity: Vec) -> None:
         self.controller = controller
         self.holding = controller.control_state.grip is not None
         self.gravity = gravity
-        self.landing: tuple[float, float, float] | None = None
-        # A controller starts AIRBORNE: standing where it was built is not a landing.
-        self.first = True
+        self.landing: _Landing | None = None
+        # A controller starts AIRBORNE: built above the ground, its first touchdown is a landing
+        # (one built at its ride height does not fall, so it reports none).
+        self.airborne = controller.state is State.AIRBORNE
 
 
 class Gameplay:
@@ -205,9 +236,42 @@ class Gameplay:
                 self._queue.extend(_events(world, watch, gravity_moved))
 
 
-def _felt(world: World, name: str) -> float:
-    fx, fy = world.forces(name).support
-    return math.hypot(fx, fy) if math.isfinite(fx) and math.isfinite(fy) else 0.0
+def _toward_ground(controller: Controller, vx: float, vy: float) -> float:
+    """The speed (vx, vy) (m/s) makes toward the ground along up, relative to the ground the
+    last step sensed, m/s (negative: moving away)."""
+    sensed = controller.sensed
+    ground = sensed.ground
+    gvx, gvy = ground.frame_velocity if ground is not None else (0.0, 0.0)
+    ux, uy = sensed.up
+    return -((vx - gvx) * ux + (vy - gvy) * uy)
+
+
+def _follow(world: World, controller: Controller, landing: _Landing) -> bool:
+    """Take the last step of a landing into account; whether its fall has stopped."""
+    name = controller.name
+    sx, sy = world.forces(name).support
+    if not (math.isfinite(sx) and math.isfinite(sy)):
+        return True
+    sensed = controller.sensed
+    ux, uy = sensed.up
+    gx, gy = world.gravity_at(name)
+    landing.peak = max(landing.peak, math.hypot(sx, sy))
+    # The step's impulse along up of the support beyond the weight, N·s.
+    net = (sx * ux + sy * uy + controller.mass * (gx * ux + gy * uy)) * sensed.dt
+    before = landing.last
+    v = controller.body.velocity
+    now = _toward_ground(controller, v.x, v.y)
+    landing.last = now
+    if now <= 0.0:
+        # Stopped within this step: its impulse until the speed crossed zero (linear in time).
+        landing.impulse += net * before / (before - now) if before > 0.0 else 0.0
+        return True
+    if now > landing.fastest:
+        landing.fastest = now
+        landing.impulse = 0.0  # counted from the fastest moment on
+    else:
+        landing.impulse += net
+    return False
 
 
 def _events(world: World, watch: _Watch, gravity_moved: bool) -> Iterable[GameplayEvent]:
@@ -217,25 +281,24 @@ def _events(world: World, watch: _Watch, gravity_moved: bool) -> Iterable[Gamepl
     t = controller.sensed.time  # the start of the step it happened in
     change = controller.transition
     before, after = (change.before, change.after) if change is not None else (None, None)
+    state = controller.state
 
-    if watch.landing is not None:
-        touchdown, speed, peak = watch.landing
-        felt = _felt(world, name)
-        gx, gy = world.gravity_at(name)
-        weight = controller.mass * math.hypot(gx, gy)
-        if (felt < peak and peak >= weight) or change is not None or t - touchdown > LANDING_WINDOW:
+    landing = watch.landing
+    if landing is None and watch.airborne and state is State.GROUNDED:
+        # Touchdown: follow the fall from the speed it had at the start of this step.
+        body = controller.sensed.body
+        landing = watch.landing = _Landing(t, _toward_ground(controller, body.vx, body.vy))
+        watch.airborne = False
+    if landing is not None:
+        stopped = _follow(world, controller, landing)
+        if stopped or state is not State.GROUNDED or t - landing.touchdown > LANDING_WINDOW:
             watch.landing = None
-            yield Landed(touchdown, name, speed, max(peak, felt))
-        else:
-            watch.landing = (touchdown, speed, max(peak, felt))
-    if before is State.AIRBORNE and after is State.GROUNDED and not watch.first:
-        sensed = controller.sensed
-        ground = sensed.ground
-        gvx, gvy = ground.frame_velocity if ground is not None else (0.0, 0.0)
-        ux, uy = sensed.up
-        speed = -((sensed.body.vx - gvx) * ux + (sensed.body.vy - gvy) * uy)
-        watch.landing = (t, speed, _felt(world, name))
-    watch.first = False
+            if landing.fastest >= MIN_LANDING_SPEED:
+                yield Landed(
+                    landing.touchdown, name, landing.fastest, landing.peak, landing.impulse
+                )
+    if state is State.AIRBORNE:
+        watch.airborne = True
 
     if after is State.OFF_BALANCE:
         yield LostBalance(t, name)

@@ -96,6 +96,7 @@ class ForceSensor:
         self._done = -1  # after_substep calls since before_step (-1: no frame begun)
         self._steps = 0  # space.step calls seen, for the contact split's stamps
         self._last_h = math.nan  # the length of the last space.step seen, s
+        self._idle = True  # no body tracked this frame: nothing to read
 
     def _replan(self) -> None:
         self._dirty = True
@@ -108,7 +109,9 @@ class ForceSensor:
         self._tracked.track(body, perceive)
 
     def untrack(self, body: pymunk.Body) -> None:
-        """Stop tracking ``body`` (before removing it from the space)."""
+        """Stop tracking ``body`` (one not tracked is left alone). A tracked body taken out of
+        the space with ``space.remove`` needs no call: the next :meth:`before_step` untracks
+        it, and reading it then raises a ``KeyError`` that says it left."""
         if self._tracked.row_of(body) is not None:
             self._tracked.untrack(body)
 
@@ -140,13 +143,18 @@ class ForceSensor:
         if not (isinstance(substeps, int) and substeps >= 1):
             raise ValueError(f"substeps: expected a whole number >= 1, got {substeps!r}")
         tracked = self._tracked
+        in_space = self.space.bodies  # a live view: membership is a dict look-up
+        for body in [b for b in tracked.bodies if b not in in_space]:
+            tracked.untrack(body)  # the game took it out of the space
         if self._dirty:
             tracked.plan(SCALAR_MAX_BODIES, True, substeps)
             self._dirty = False
         self._substeps = substeps
         self._done = 0
         self._last_h = raw.current_time_step(self._space_h)
-        tracked.active.before_step(None, substeps)
+        self._idle = not tracked.bodies
+        if not self._idle:
+            tracked.active.before_step(None, substeps)
 
     def after_substep(self) -> None:
         """Read the tracked bodies after one ``space.step`` of the frame."""
@@ -164,6 +172,8 @@ class ForceSensor:
         rescaled = self._settings.contact_split and h != self._last_h
         self._last_h = h
         self._steps += 1
+        if self._idle:
+            return
         active = self._tracked.active
         active.after_substep(last=last, stamp=self._steps, rescaled=rescaled)
         if not last:
@@ -176,6 +186,9 @@ class ForceSensor:
             raise RuntimeError(
                 f"finish: {self._done} after_substep calls since before_step({self._substeps})"
             )
+        self._done = -1  # a finished frame: after_substep and finish wait for before_step
+        if self._idle:
+            return
         tracked = self._tracked
         active = tracked.active
         active.finish(
@@ -187,7 +200,6 @@ class ForceSensor:
         )
         if tracked.perceivers:
             active.filter(dt, self._up_at)
-        self._done = -1  # a finished frame: after_substep and finish wait for before_step
 
     def _up_at(self, body: pymunk.Body) -> Vec:
         """A body's up until it has felt a reading: against the space's gravity."""
@@ -200,6 +212,11 @@ class ForceSensor:
     def _row(self, body: pymunk.Body) -> int:
         row = self._tracked.row_of(body)
         if row is None:
+            if isinstance(body, pymunk.Body) and body.space is not self.space:
+                raise KeyError(
+                    f"{body!r}: not tracked, it is not in the sensor's space (a tracked body "
+                    "taken out with space.remove is untracked at the next step)"
+                )
             raise KeyError(f"{body!r}: not tracked (call sensor.track(body) first)")
         return row
 

@@ -124,6 +124,9 @@ class World:
         self._scalar_max_bodies = SCALAR_MAX_BODIES
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._movers: list[Mover] = []
+        # Tracked bodies the world has no name for (added with space.add): each step checks
+        # that they are still in the space (see track).
+        self._anonymous: list[pymunk.Body] = []
         self._stepping = False
         self._schedule = Schedule(self._replan)
         registry = self._registry
@@ -429,7 +432,28 @@ class World:
         """Recover engine forces for these dynamic bodies every step, by name or as bodies of
         :attr:`space` (a body the game added with ``space.add`` too, named or not);
         ``perceive`` also filters their perceived gravity. From the next step on if the world
-        is :attr:`locked`."""
+        is :attr:`locked`.
+
+        A body without a name may leave the way it came, with ``space.remove``: the next step
+        untracks it before its gravity stage (a body removed by an INPUTS or EVENTS hook is
+        untracked in that step, one removed later in the step in the next), and reading it
+        then raises a ``KeyError`` that says it left. A named body leaves with :meth:`remove`.
+
+        >>> world = World()
+        >>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))          # m
+        >>> crate = pymunk.Body(10.0, pymunk.moment_for_box(10.0, (1.0, 1.0)))  # kg, kg·m²
+        >>> crate.position = (0.0, 0.55)                                        # m
+        >>> box = pymunk.Poly.create_box(crate, (1.0, 1.0))                     # m
+        >>> world.space.add(crate, box)
+        >>> world.track(crate)
+        >>> world.run(1.0)                                                      # s
+        >>> round(world.forces(crate).support[1], 6)                            # N: m·g
+        98.1
+        >>> world.space.remove(crate, box)
+        >>> world.step()
+        >>> world.tracked_bodies
+        []
+        """
         registry = self._registry
         for item in bodies:
             if isinstance(item, str):
@@ -441,7 +465,12 @@ class World:
             return
         tracked = self._physics.tracked
         for item in bodies:
-            tracked.track(registry.body(item) if isinstance(item, str) else item, perceive)
+            if isinstance(item, str):
+                tracked.track(registry.body(item), perceive)
+                continue
+            tracked.track(item, perceive)
+            if registry.name_of(item) is None and item not in self._anonymous:
+                self._anonymous.append(item)
 
     def untrack(self, *bodies: str | pymunk.Body) -> None:
         """Stop tracking these bodies (by name or as bodies; one not tracked is left alone): for
@@ -456,6 +485,22 @@ class World:
         for body in items:
             if tracked.row_of(body) is not None:
                 tracked.untrack(body)
+        self._anonymous = [b for b in self._anonymous if b not in items]
+
+    def _untrack_departed(self) -> None:
+        """Untrack the nameless tracked bodies the game took out of :attr:`space` (see
+        :meth:`track`); forget those named since (:meth:`remove` takes care of them)."""
+        in_space = self.space.bodies  # a live view: membership is a dict look-up
+        name_of = self._registry.name_of
+        tracked = self._physics.tracked
+        staying = []
+        for body in self._anonymous:
+            if body not in in_space:
+                if tracked.row_of(body) is not None:
+                    tracked.untrack(body)
+            elif name_of(body) is None:
+                staying.append(body)
+        self._anonymous = staying
 
     def _in_space(self, body: object) -> pymunk.Body:
         """``body`` if it is a dynamic body of :attr:`space` (``ValueError`` otherwise)."""
@@ -516,6 +561,11 @@ class World:
         else:
             raise ValueError(f"body: expected a body name or a body of this world, got {item!r}")
         if row is None:
+            if isinstance(item, pymunk.Body) and item.space is not self.space:
+                raise KeyError(
+                    f"{item!r}: not tracked, it is not in the world's space (a tracked body "
+                    "taken out with space.remove is untracked at the next step)"
+                )
             raise KeyError(f"{item}: not tracked (call world.track({item!r}) first)")
         return row
 
@@ -617,6 +667,10 @@ class World:
             if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
                 schedule.run_events(self)
                 lap(EVENTS)
+            # A nameless tracked body the game took out of the space is untracked now, before
+            # any stage reads it.
+            if self._anonymous:
+                self._untrack_departed()
             # An input or event that tracked or untracked a body changed which implementation
             # serves the tracked bodies: plan again, so the gravity stage hands its field in the
             # form the physics stage now takes.

@@ -132,3 +132,27 @@ def test_a_body_of_another_space_is_refused() -> None:
         sensor.track(stranger)
     with pytest.raises(KeyError, match="not tracked"):
         sensor.readings(stranger)
+
+
+@pytest.mark.parametrize("n", [1, 40])
+def test_a_crate_taken_out_with_space_remove_is_untracked(n: int) -> None:
+    """Rule (ForceSensor.untrack): a tracked body the game takes out with ``space.remove`` is
+    untracked by the next frame, whichever implementation serves the rest, and reading it says
+    it left; the others read their weight on."""
+    space = pymunk.Space()
+    space.gravity = (0.0, -9.81)
+    crates = _crates(space, n)
+    sensor = ForceSensor(space)
+    for crate in crates:
+        sensor.track(crate)
+    for _ in range(60):
+        sensor.step(1 / 60)
+    gone = crates[0]
+    space.remove(gone, *gone.shapes)
+    for _ in range(60):
+        sensor.step(1 / 60)
+    assert sensor.bodies == crates[1:]
+    with pytest.raises(KeyError, match="not in the sensor's space"):
+        sensor.readings(gone)
+    for crate in crates[1:]:
+        assert sensor.readings(crate).support[1] == pytest.approx(98.1, rel=TOL_REST)

@@ -293,6 +293,54 @@ def test_a_body_the_game_added_itself_can_be_tracked(named: bool) -> None:
         world.forces(key)
 
 
+@pytest.mark.parametrize("when", ["between steps", "in INPUTS", "in OBSERVE"])
+def test_a_nameless_tracked_body_taken_out_with_space_remove_is_untracked(when: str) -> None:
+    """Rule (World.track): a body tracked without a name leaves with ``space.remove``; the next
+    step untracks it before its gravity stage (one removed by an INPUTS hook, in that step),
+    and reading it says it left. Put back and tracked again, it reads its weight again."""
+    world = World()
+    crate = _crate_on_the_floor(world)
+    (box,) = crate.shapes
+    world.track(crate)
+    world.run(0.5)
+
+    def take_out(w: World) -> None:
+        w.space.remove(crate, box)
+        w.off(stage, take_out)
+
+    stage = Stage.INPUTS if when == "in INPUTS" else Stage.OBSERVE
+    if when == "between steps":
+        world.space.remove(crate, box)
+    else:
+        world.on(stage, take_out)
+    world.step()
+    left_in_that_step = when != "in OBSERVE"
+    assert world.tracked_bodies == ([] if left_in_that_step else [crate])
+    world.step()
+    assert world.tracked_bodies == []
+    with pytest.raises(KeyError, match="not in the world's space"):
+        world.forces(crate)
+    world.run(0.5)  # stepping on without it
+    crate.position, crate.velocity = (0.0, 0.55), (0.0, 0.0)
+    world.space.add(crate, box)
+    world.track(crate)
+    world.run(1.0)
+    assert world.forces(crate).support[1] == pytest.approx(98.1, rel=TOL_REST)
+
+
+def test_a_nameless_body_named_later_leaves_by_name() -> None:
+    """A tracked body adopted after it was tracked is a named body: ``World.remove`` takes it
+    out of the space and untracks it."""
+    world = World()
+    crate = _crate_on_the_floor(world)
+    world.track(crate)
+    world.adopt("crate", crate)
+    world.run(0.5)
+    world.remove("crate")
+    world.step()
+    assert world.tracked_bodies == [] and crate.space is None
+
+
 def test_a_body_of_another_space_is_refused_by_track_and_adopt() -> None:
     """Law: ``track`` and ``adopt`` refuse a body that is not in the world's space, and
     ``adopt`` a second name, saying why."""
