@@ -12,6 +12,10 @@ it stays in its lane: a ``*.toml`` file is collected as a level only when
 Any other TOML file (another project's ``levels/forest.toml``) is left alone. Each level is built
 and run once, on its first item; each expectation is one test item whose failure message is the
 check's detail. A file that does not load is one failing item listing every problem.
+
+``--playground-set KEY.PATH=VALUE`` (repeatable) runs every collected level as a variant, each
+key set as ``playground run --set`` sets it (:mod:`playground.level.variants`):
+``pytest levels/ --playground-set settings.substeps=2``.
 """
 
 from __future__ import annotations
@@ -26,8 +30,9 @@ import pytest
 from playground.level.document import SCHEMA_ID, Level
 from playground.level.errors import LevelError
 from playground.level.loading import load
+from playground.level.variants import Setting, SettingError, parse_sets
 
-__all__ = ["INI_OPTION", "LevelFile", "LevelItem", "declares_level"]
+__all__ = ["INI_OPTION", "SET_OPTION", "LevelFile", "LevelItem", "declares_level"]
 
 INI_OPTION = "playground_levels"
 """The ini option a project uses to opt its level files in (glob patterns, rootdir-relative)."""
@@ -36,13 +41,37 @@ SCHEMA_NAME = SCHEMA_ID.rsplit("/", 1)[-1]
 """The schema's file name, which a level's ``#:schema`` directive ends with."""
 
 
+SET_OPTION = "--playground-set"
+"""The command-line option that runs every collected level as a variant (repeatable)."""
+
+
 def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        SET_OPTION,
+        action="append",
+        default=[],
+        metavar="KEY.PATH=VALUE",
+        help="run every collected level as a variant: set one key of it, as `playground run "
+        "--set` does (TOML value; repeatable)",
+    )
     parser.addini(
         INI_OPTION,
         "glob patterns (relative to the rootdir) of level files the playground plugin collects",
         type="args",
         default=[],
     )
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    _sets(config)  # a setting that cannot be read is a usage error before anything is collected
+
+
+def _sets(config: pytest.Config) -> tuple[Setting, ...]:
+    """The ``--playground-set`` settings (a usage error if one cannot be read)."""
+    try:
+        return parse_sets(config.getoption(SET_OPTION) or [])
+    except SettingError as exc:
+        raise pytest.UsageError(f"{SET_OPTION}: {exc}") from None
 
 
 def declares_level(path: Path) -> bool:
@@ -95,7 +124,7 @@ class LevelFile(pytest.File):
 
     def collect(self) -> Iterator[pytest.Item]:
         try:
-            level = load(self.path)
+            level = load(self.path, _sets(self.config))
         except LevelError as exc:
             yield LevelItem.from_parent(self, name="load", check=None, error=str(exc))
             return

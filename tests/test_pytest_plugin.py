@@ -94,3 +94,21 @@ def test_plugin_collects_one_item_per_expectation() -> None:
     ).stdout
     items = [line for line in out.splitlines() if "::" in line]
     assert len(items) == len(load(path).expect)
+
+
+def test_playground_set_runs_every_level_as_a_variant(pytester: pytest.Pytester) -> None:
+    """``--playground-set`` sets a key of every collected level, as ``playground run --set``
+    does: ``rest`` (checks in the player's weights) passes at twice its mass and two substeps,
+    and a bad value fails the level's load item naming the setting and the key."""
+    path = pytester.path / "rest.toml"
+    path.write_text(_level_text(directive=True), encoding="utf-8")
+    mass, substeps = "actors.player.controller.mass=140", "settings.substeps=2"
+    result = pytester.runpytest(
+        "-p", "no:cacheprovider", "--playground-set", mass, "--playground-set", substeps
+    )
+    result.assert_outcomes(passed=_checks())
+    bad = pytester.runpytest("-p", "no:cacheprovider", "--playground-set", "settings.substeps=0")
+    bad.assert_outcomes(failed=1)
+    bad.stdout.fnmatch_lines(["*rest.toml (with --set settings.substeps=0): settings.substeps:*"])
+    unreadable = pytester.runpytest("-p", "no:cacheprovider", "--playground-set", "substeps")
+    unreadable.stderr.fnmatch_lines(["*--playground-set: --set substeps: expected KEY.PATH=VALUE*"])

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK, EXIT_USAGE
-from playground.cli.levelfiles import load_checked
+from playground.cli.levelfiles import add_set_option, load_checked
 from playground.level.errors import LevelError
 from playground.level.files import find, shipped
 
@@ -42,7 +42,8 @@ def cmd_faults(args: argparse.Namespace) -> int:
         return EXIT_USAGE
     try:
         items = args.levels or list(shipped())
-        levels = [(_level_name(item), load_checked(find(item))) for item in items]
+        sets = tuple(args.sets)
+        levels = [(_level_name(item), load_checked(find(item), sets)) for item in items]
     except LevelError as exc:
         print(f"playground faults: {exc}", file=sys.stderr)
         return EXIT_USAGE
@@ -153,4 +154,5 @@ def configure(p: argparse.ArgumentParser) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--list", action="store_true", help="list the breaks and what each breaks")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    add_set_option(p)
     p.set_defaults(func=cmd_faults)

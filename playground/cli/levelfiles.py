@@ -19,9 +19,11 @@ from playground.cli.preflight import writable
 from playground.level.document import Level, schema
 from playground.level.errors import LevelError
 from playground.level.files import find, shipped
-from playground.level.loading import load
+from playground.level.loading import load, variant_source
+from playground.level.variants import Setting, SettingError, parse_set
 
 __all__ = [
+    "add_set_option",
     "cmd_check",
     "cmd_list",
     "cmd_schema",
@@ -46,18 +48,39 @@ def cmd_list(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def load_checked(path: Path) -> Level:
-    """The level file at ``path``, its declared breaks also checked against the catalogue of
-    faults (a :class:`LevelError` naming the file and each key; the level format alone knows
-    no break names)."""
-    level = load(path)
+def load_checked(path: Path, sets: tuple[Setting, ...] = ()) -> Level:
+    """The level file at ``path`` (a variant of it with ``sets``), its declared breaks also
+    checked against the catalogue of faults (a :class:`LevelError` naming the file and each
+    key; the level format alone knows no break names)."""
+    level = load(path, sets)
     if level.catches:
         from playground.faults.catalog import catch_problems
 
         problems = catch_problems(level)
         if problems:
-            raise LevelError(str(path), problems)
+            raise LevelError(variant_source(str(path), sets), problems)
     return level
+
+
+def _setting(text: str) -> Setting:
+    try:
+        return parse_set(text)
+    except SettingError as exc:
+        raise argparse.ArgumentTypeError(exc.message) from None
+
+
+def add_set_option(p: argparse.ArgumentParser) -> None:
+    """The ``--set KEY.PATH=VALUE`` option of the commands that load levels (``args.sets``)."""
+    p.add_argument(
+        "--set",
+        dest="sets",
+        action="append",
+        type=_setting,
+        default=[],
+        metavar="KEY.PATH=VALUE",
+        help="a variant: set one key of the level (TOML value; repeatable), e.g. "
+        "--set actors.player.controller.mass=140 --set settings.substeps=2",
+    )
 
 
 def cmd_check(args: argparse.Namespace) -> int:
@@ -66,11 +89,12 @@ def cmd_check(args: argparse.Namespace) -> int:
     from playground.scene.scene import build
 
     failed = False
+    sets = tuple(args.sets)
     for item in args.files:
         try:
             path = find(item)
-            level = load_checked(path)
-            scene = build(level, str(path))
+            level = load_checked(path, sets)
+            scene = build(level, variant_source(str(path), sets))
             print(f"ok      {item}: {level.title}")
             note = _long_run(scene.world.space, level)
             if note:
@@ -127,6 +151,7 @@ def configure_list(p: argparse.ArgumentParser) -> None:
 
 def configure_check(p: argparse.ArgumentParser) -> None:
     p.add_argument("files", nargs="+", metavar="FILE", help="level files or shipped names")
+    add_set_option(p)
     p.set_defaults(func=cmd_check)
 
 

@@ -29,9 +29,10 @@ from pathlib import Path
 from typing import Any
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK, EXIT_USAGE
+from playground.cli.levelfiles import add_set_option
 from playground.cli.preflight import UsageError
 from playground.level.files import find
-from playground.level.loading import load
+from playground.level.loading import load, variant_source
 from playground.limits import MAX_DT, MAX_SECONDS, MAX_TIME, MIN_DT
 from playground.quantities import REPORTED, Value
 from playground.scene.readings import sample
@@ -61,12 +62,17 @@ def cmd_run(args: argparse.Namespace) -> int:
         except ValueError as exc:
             raise UsageError(str(exc)) from None
     path = find(args.level)
-    level = load(path)
-    scene = build(level, str(path))
+    sets = tuple(args.sets)
+    level = load(path, sets)
+    scene = build(level, variant_source(str(path), sets))
     seconds = level.settings.seconds if args.seconds is None else args.seconds
     # Whichever set the length is named: the flag, the replay (its steps), or the level file
     # (check bounds settings.seconds to what run allows without --long).
-    key = "--seconds" if args.seconds is not None else f"{path}: settings.seconds"
+    key = (
+        "--seconds"
+        if args.seconds is not None
+        else f"{variant_source(str(path), sets)}: settings.seconds"
+    )
     if args.replay is not None:
         covered = _replay(args.replay, path.stem, scene)
         if covered is None:
@@ -97,7 +103,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     wall = time.perf_counter() - start
     results = checks.results()
     world = scene.world
-    profile = _profile(path, seconds) if args.profile else []
+    profile = _profile(path, sets, seconds) if args.profile else []
     if args.json:
         bodies = {name: _body_report(scene, name) for name in scene.tracked}
         report = {
@@ -106,6 +112,7 @@ def cmd_run(args: argparse.Namespace) -> int:
             "steps": world.steps,
             "sim_seconds": world.time,
             "wall_seconds": wall,
+            **({"set": [str(s) for s in sets]} if sets else {}),
             "checks": [{"name": r.name, "passed": r.passed, "detail": r.detail} for r in results],
             "bodies": bodies,
         }
@@ -146,12 +153,12 @@ def _json(value: Value) -> Any:
     return value
 
 
-def _profile(path: Path, seconds: float) -> list[Any]:
-    """The top functions of a second run of the level under cProfile."""
+def _profile(path: Path, sets: tuple[Any, ...], seconds: float) -> list[Any]:
+    """The top functions of a second run of the level (its variant) under cProfile."""
     from playground.bench.profiler import top_functions
     from playground.scene import build
 
-    again = build(load(path), str(path))
+    again = build(load(path, sets), str(path))
     return top_functions(lambda: again.run(seconds))
 
 
@@ -225,4 +232,5 @@ def configure(p: argparse.ArgumentParser) -> None:
         action="store_true",
         help="print the time of each stage and the top functions (runs the level twice)",
     )
+    add_set_option(p)
     p.set_defaults(func=cmd_run)

@@ -47,6 +47,12 @@ class Expectation(Table):
     The value compared is the quantity, minus the same quantity of ``relative_to``, minus the
     reading ``minus`` (another body's force, say), filtered if asked; then, with ``angle_to``,
     the angle between that vector and a fixed vector or another reading (its direction, rad).
+
+    A force check may state its numbers in a body's own terms, so that it reads the same at any
+    mass: with ``weights_of = "player"``, ``equals``, ``tolerance``, ``above`` and ``below``
+    count weights m·g₀ of that body (``equals = [0.0, 1.0]``: one weight, straight up); with
+    ``per_mass_of = "player"`` they are newtons per kilogram of it, an acceleration
+    (``equals = [0.0, 10.81]``: m·(g + a) with g + a = 10.81 m/s²).
     """
 
     name: str | None = Field(
@@ -80,6 +86,18 @@ class Expectation(Table):
     minus: Reading | None = Field(
         default=None,
         description="Subtract another reading (of any body, of the same kind) taken the same step.",
+    )
+    weights_of: Name | None = Field(
+        default=None,
+        description="A force check's numbers (equals, tolerance, above, below) count weights "
+        "of this body, m·g₀ with g₀ = 9.81 m/s² (the standard gravity the controller's budgets "
+        "are in): the same check at any mass. Default: newtons.",
+    )
+    per_mass_of: Name | None = Field(
+        default=None,
+        description="A force check's numbers (equals, tolerance, above, below) are newtons per "
+        "kilogram of this body, m/s² (m·(g + a) is g + a): the same check at any mass. "
+        "Default: newtons.",
     )
     angle_to: Vec | Reading | None = Field(
         default=None,

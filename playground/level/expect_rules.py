@@ -183,7 +183,25 @@ def _kind_of_value(path: str, exp: Expectation, ctx: Context) -> Iterator[Proble
         yield Problem(f"{path}.equals", "expected a number for a component, angle or scalar")
 
 
-_COMMON_RULES: tuple[Rule, ...] = (_relative_to, _change, _timing)
+def _own_terms(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]:
+    """A check in a body's weights (or per its kilogram) names a body with a mass and reads a
+    force; it is one or the other."""
+    for key, body in (("weights_of", exp.weights_of), ("per_mass_of", exp.per_mass_of)):
+        if body is None:
+            continue
+        at = f"{path}.{key}"
+        if body not in ctx.names:
+            yield _unknown(at, body, ctx.names)
+        elif body in (m.name for m in ctx.level.movers):
+            yield Problem(at, f"{body!r} is a mover (kinematic): it has no mass")
+        if exp.quantity not in FORCE_QUANTITIES + CONTROLLER_QUANTITIES or exp.angle_to:
+            what = "an angle" if exp.angle_to is not None else exp.quantity
+            yield Problem(at, f"only a force is counted in a body's mass or weight, not {what}")
+    if exp.weights_of is not None and exp.per_mass_of is not None:
+        yield Problem(path, "give weights_of or per_mass_of, not both")
+
+
+_COMMON_RULES: tuple[Rule, ...] = (_relative_to, _change, _timing, _own_terms)
 _STATE_RULES: tuple[Rule, ...] = (_state,)
 _VALUE_RULES: tuple[Rule, ...] = (_comparison, _own_reading, _minus, _angle_to, _kind_of_value)
 

@@ -6,6 +6,7 @@ import os
 import re
 import stat
 import tomllib
+from collections.abc import Sequence
 from pathlib import Path
 
 from pydantic import ValidationError
@@ -15,12 +16,14 @@ from playground.level.errors import LevelError, Problem
 from playground.level.explain import problems
 from playground.level.references import references
 from playground.level.salvage import salvaged_references
+from playground.level.variants import Setting, SettingError, apply
 
 _TOML_WHERE = re.compile(r"\(at line (\d+), column (\d+)\)")
 
 
-def loads(text: str, source: str = "<string>") -> Level:
-    """Parse and validate a level from TOML text; :class:`LevelError` lists every problem."""
+def loads(text: str, source: str = "<string>", sets: Sequence[Setting] = ()) -> Level:
+    """Parse and validate a level from TOML text, with the settings ``sets`` applied (a variant,
+    see :mod:`playground.level.variants`); :class:`LevelError` lists every problem."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -32,7 +35,26 @@ def loads(text: str, source: str = "<string>") -> Level:
     except RecursionError:
         # tomllib parses nested arrays and inline tables recursively.
         raise LevelError(source, [_TOO_DEEP]) from None
-    return validate(data, source)
+    if not sets:
+        return validate(data, source)
+    label = variant_source(source, sets)
+    try:
+        data = apply(data, sets)
+    except SettingError as exc:
+        raise LevelError(label, [exc.problem()]) from None
+    return validate(data, label)
+
+
+def variant_source(source: str, sets: Sequence[Setting]) -> str:
+    """What a variant's problems are reported under: the file and its settings.
+
+    >>> from playground.level.variants import parse_sets
+    >>> variant_source("rest.toml", parse_sets(["settings.substeps=2"]))
+    'rest.toml (with --set settings.substeps=2)'
+    """
+    if not sets:
+        return source
+    return f"{source} (with {' '.join(f'--set {s}' for s in sets)})"
 
 
 _TOO_DEEP = Problem("", "document nested too deeply (no level nests more than a few tables)")
@@ -54,8 +76,8 @@ def validate(data: object, source: str = "<data>") -> Level:
     return level
 
 
-def load(path: str | os.PathLike[str]) -> Level:
-    """Load a level file.
+def load(path: str | os.PathLike[str], sets: Sequence[Setting] = ()) -> Level:
+    """Load a level file (with the settings ``sets`` applied: a variant).
 
     >>> from playground.level.files import find
     >>> load(find("rest")).title
@@ -69,4 +91,4 @@ def load(path: str | os.PathLike[str]) -> Level:
         text = p.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise LevelError(str(p), [Problem("", f"cannot read the file: {exc}")]) from None
-    return loads(text, str(p))
+    return loads(text, str(p), sets)

@@ -21,18 +21,29 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from playground.controller.config import G0
 from playground.filters.chain import FilterChain
 from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
 from playground.level.document import Level
 from playground.level.expect import Expectation, Reading
+from playground.level.timeline import Spawn
 from playground.quantities import CHECKED
 from playground.scene import Scene
 from playground.scene.readings import READERS
 from playground.world.schedule import Stage
 from playground.world.world import World
 
-__all__ = ["UNITS", "Check", "CheckResult", "Checks", "check_names", "read", "watch"]
+__all__ = [
+    "UNITS",
+    "Check",
+    "CheckResult",
+    "Checks",
+    "check_names",
+    "mass_of",
+    "read",
+    "watch",
+]
 
 Value = float | tuple[float, float] | str
 
@@ -81,6 +92,34 @@ def name_of(exp: Expectation) -> str:
     return f"{what} {exp.check} in [{exp.window[0]:g}, {exp.window[1]:g}] s"
 
 
+def mass_of(level: Level, body: str) -> float:
+    """A body's mass as the level declares it, kg (a prop's, a spawned prop's or an actor's; a
+    variant's, with ``--set``): with :data:`G0`, the unit of a check in ``weights_of`` or
+    ``per_mass_of`` a body.
+
+    >>> from playground.level import find, load
+    >>> mass_of(load(find("crusher")), "crate") * G0
+    2452.5
+    """
+    for actor in level.actors:
+        if actor.name == body:
+            return float(actor.controller.mass)
+    props = [*level.props, *(e.prop for e in level.events if isinstance(e, Spawn))]
+    for prop in props:
+        if prop.name == body:
+            return prop.mass
+    raise KeyError(f"{body!r} has no mass in the level (a prop, a spawned prop or an actor)")
+
+
+def _own_terms(exp: Expectation, level: Level) -> tuple[float, str]:
+    """What one of a check's numbers stands for, N (1 for newtons), and its name."""
+    if exp.weights_of is not None:
+        return mass_of(level, exp.weights_of) * G0, f"weights of {exp.weights_of}"
+    if exp.per_mass_of is not None:
+        return mass_of(level, exp.per_mass_of), f"N/kg of {exp.per_mass_of}"
+    return 1.0, ""
+
+
 def _reading_name(r: Reading) -> str:
     scale = "" if r.scale == 1.0 else f"{r.scale:g}·"
     return f"{scale}{r.body}.{r.quantity}"
@@ -92,6 +131,17 @@ def _fmt(value: Value, unit: str) -> str:
     if isinstance(value, tuple):
         return f"[{value[0]:.6g}, {value[1]:.6g}] {unit}".rstrip()
     return f"{value:.6g} {unit}".rstrip()
+
+
+def _scaled(
+    number: float | tuple[float, float] | str | None, per: float
+) -> float | tuple[float, float] | str | None:
+    """A check's number (or vector) times ``per``; a state name or None as it is."""
+    if per == 1.0 or number is None or isinstance(number, str):
+        return number
+    if isinstance(number, tuple):
+        return (number[0] * per, number[1] * per)
+    return number * per
 
 
 def _minus(a: Value, b: Value) -> Value:
@@ -123,6 +173,13 @@ class Check:
         self.unit = "rad" if exp.angle_to is not None else UNITS[exp.quantity]
         self.dt: float = scene.level.settings.dt
         self._window = exp.window or (0.0, scene.level.settings.seconds)
+        # The check's numbers in the reading's unit: newtons for a check in a body's own terms.
+        per, self._terms = _own_terms(exp, scene.level)
+        self._per = per
+        self._equals = _scaled(exp.equals, per)
+        self._above = None if exp.above is None else exp.above * per
+        self._below = None if exp.below is None else exp.below * per
+        self._tolerance = exp.tolerance * per
         self._filter: FilterChain | OneEuroFilter | None = None
         if exp.filtered and exp.quantity != "support":
             p = scene.level.tracking.perception
@@ -241,26 +298,27 @@ class Check:
         if exp.quantity == "state":
             wanted = exp.one_of if exp.one_of is not None else [str(exp.equals)]
             return (value in wanted, 0.0 if value in wanted else 1.0)
-        if exp.equals is not None:
-            assert not isinstance(exp.equals, str) and not isinstance(value, str)
-            e = np.asarray(exp.equals, dtype=np.float64)
+        if self._equals is not None:
+            assert not isinstance(self._equals, str) and not isinstance(value, str)
+            e = np.asarray(self._equals, dtype=np.float64)
             v = np.asarray(value, dtype=np.float64)
             off = float(np.hypot(*(v - e))) if e.ndim else abs(float(v - e))
             allowed = self._allowed()
             return (off <= allowed, max(0.0, off - allowed))
         assert isinstance(value, float)
         miss = 0.0
-        if exp.above is not None and not value > exp.above:
-            miss = max(miss, exp.above - value)
-        if exp.below is not None and not value < exp.below:
-            miss = max(miss, value - exp.below)
+        if self._above is not None and not value > self._above:
+            miss = max(miss, self._above - value)
+        if self._below is not None and not value < self._below:
+            miss = max(miss, value - self._below)
         return (miss == 0.0 and math.isfinite(value), miss if math.isfinite(value) else math.inf)
 
     def _allowed(self) -> float:
         exp = self.exp
-        assert exp.equals is not None and not isinstance(exp.equals, str)
-        size = math.hypot(*exp.equals) if isinstance(exp.equals, tuple) else abs(exp.equals)
-        return exp.tolerance + exp.relative * size
+        equals = self._equals
+        assert equals is not None and not isinstance(equals, str)
+        size = math.hypot(*equals) if isinstance(equals, tuple) else abs(equals)
+        return self._tolerance + exp.relative * size
 
     def _expected(self) -> str:
         exp = self.exp
@@ -268,21 +326,28 @@ class Check:
             if exp.one_of is not None:
                 return f"one of {exp.one_of}"
             return repr(exp.equals)
-        if exp.equals is not None:
-            assert not isinstance(exp.equals, str)
-            return f"{_fmt(exp.equals, self.unit)} ± {self._allowed():.3g} {self.unit}".rstrip()
+        if self._equals is not None:
+            assert not isinstance(self._equals, str)
+            want = f"{_fmt(self._equals, self.unit)} ± {self._allowed():.3g} {self.unit}".rstrip()
+            return want + self._in_weights(exp.equals)
         parts = []
-        if exp.above is not None:
-            parts.append(f"> {exp.above:g} {self.unit}".rstrip())
-        if exp.below is not None:
-            parts.append(f"< {exp.below:g} {self.unit}".rstrip())
+        if self._above is not None:
+            parts.append(f"> {self._above:g} {self.unit}{self._in_weights(exp.above)}".rstrip())
+        if self._below is not None:
+            parts.append(f"< {self._below:g} {self.unit}{self._in_weights(exp.below)}".rstrip())
         return " and ".join(parts)
 
-    def _off(self, value: Value) -> str:
-        exp = self.exp
-        if exp.equals is None or isinstance(exp.equals, str) or isinstance(value, str):
+    def _in_weights(self, number: float | tuple[float, float] | str | None) -> str:
+        """`` (3 weights of player)``: what a number of a check in a body's terms stood for."""
+        if not self._terms or number is None or isinstance(number, str):
             return ""
-        e = np.asarray(exp.equals, dtype=np.float64)
+        shown = _fmt(number, "").strip()
+        return f" ({shown} {self._terms})"
+
+    def _off(self, value: Value) -> str:
+        if self._equals is None or isinstance(self._equals, str) or isinstance(value, str):
+            return ""
+        e = np.asarray(self._equals, dtype=np.float64)
         v = np.asarray(value, dtype=np.float64)
         off = float(np.hypot(*(v - e))) if e.ndim else abs(float(v - e))
         unit = f" {self.unit}" if self.unit else ""

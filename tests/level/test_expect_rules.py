@@ -101,6 +101,25 @@ def _problems(expect: str) -> list[str]:
             'body = "player"\nquantity = "angle"\nt = 1\nequals = [1, 0]',
             "expect.0.equals: expected a number for a component, angle or scalar",
         ),
+        (
+            'body = "player"\nquantity = "hover"\nt = 1\nequals = [0, 1]\nweights_of = "crat"',
+            "expect.0.weights_of: no body named 'crat' (did you mean 'crate'?)",
+        ),
+        (
+            'body = "player"\nquantity = "angle"\nt = 1\nbelow = 1\nweights_of = "player"',
+            "expect.0.weights_of: only a force is counted in a body's mass or weight, not angle",
+        ),
+        (
+            'body = "player"\nquantity = "hover"\nt = 1\nbelow = 1\nangle_to = [0, 1]\n'
+            'per_mass_of = "player"',
+            "expect.0.per_mass_of: only a force is counted in a body's mass or weight, not an "
+            "angle",
+        ),
+        (
+            'body = "player"\nquantity = "hover"\nt = 1\nequals = [0, 1]\nweights_of = "player"\n'
+            'per_mass_of = "player"',
+            "expect.0: give weights_of or per_mass_of, not both",
+        ),
     ],
 )
 def test_each_rule_reports_its_mistake_at_its_key_path(expect: str, problem: str) -> None:
