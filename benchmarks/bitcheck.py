@@ -60,10 +60,14 @@ def main() -> int:
         print(f"{len(digests)} levels hashed into {args.out}")
         return 0
     before = json.loads(args.against.read_text())
-    differ = sorted(k for k in before.keys() | digests.keys() if before.get(k) != digests.get(k))
+    # A level that is new since the earlier file has nothing to be identical to: it is listed,
+    # not failed. A level that differs, or one that is gone, fails the comparison.
+    for level in sorted(digests.keys() - before.keys()):
+        print(f"NEW {level}")
+    differ = sorted(k for k in before if before[k] != digests.get(k))
     for level in differ:
-        print(f"DIFFERS {level}")
-    print("IDENTICAL" if not differ else f"{len(differ)} of {len(digests)} levels differ")
+        print(f"DIFFERS {level}" if level in digests else f"GONE {level}")
+    print("IDENTICAL" if not differ else f"{len(differ)} of {len(before)} levels differ")
     return 1 if differ else 0
 
 
