@@ -4,7 +4,9 @@ putting them to sleep.
 :class:`BodyRegistry` is the part of :class:`~playground.world.world.World` that keeps the space
 and the names of its bodies; the world learns of each change through the ``added`` and
 ``removed`` callbacks it passes in (its stages follow: gravity registry, tracking, movers). A body
-added straight to the space (``space.add``) is unnamed until :meth:`BodyRegistry.adopt` names it.
+added straight to the space (``space.add``) is unnamed until :meth:`BodyRegistry.adopt` names it;
+a named body the game takes out of the space itself (``space.remove``) leaves the registry at
+:meth:`BodyRegistry.forget_departed`, which the world calls before each step.
 
 While the world is *locked* (from its gravity stage to the end of a step, see
 :meth:`BodyRegistry.lock`), bodies and static shapes added or removed by a hook join or leave
@@ -26,6 +28,7 @@ from collections.abc import Callable
 
 import pymunk
 
+from playground._engine.space import CountingSpace
 from playground.limits import (
     MAX_ANGLE,
     MAX_COORDINATE,
@@ -46,7 +49,12 @@ from playground.world.bodies import (
 )
 from playground.world.errors import WorldUsageError
 
-__all__ = ["BodyRegistry"]
+__all__ = ["DEPARTED_REMEMBERED", "BodyRegistry"]
+
+DEPARTED_REMEMBERED = 256
+"""How many names of bodies taken out with ``space.remove`` the registry remembers, newest
+first, to say so when one is looked up (a bound: a game may spawn and drop bodies by the
+thousand, each with a name of its own)."""
 
 
 def _nothing(body: pymunk.Body) -> None:
@@ -57,7 +65,7 @@ class BodyRegistry:
     """A pymunk space and its bodies by name (unique names; unnamed static shapes allowed).
 
     ``added(body)`` runs after a named body joined (or was adopted), ``removed(body)`` after one
-    left the registry while it is still in the space.
+    left the registry (still in the space, unless the game took it out with ``space.remove``).
     """
 
     def __init__(
@@ -65,7 +73,12 @@ class BodyRegistry:
         added: Callable[[pymunk.Body], None] = _nothing,
         removed: Callable[[pymunk.Body], None] = _nothing,
     ) -> None:
-        self.space = pymunk.Space()
+        self.space = CountingSpace()
+        self.removals_seen = 0
+        """``space.removals`` when the registry last looked for bodies the game took out of the
+        space (:meth:`forget_departed`): a step compares the two before it reads any body."""
+        # The names of bodies that left by space.remove, newest last, to say so when looked up.
+        self._departed: dict[str, None] = {}
         self._added = added
         self._removed = removed
         self.by_name: dict[str, pymunk.Body] = {}
@@ -133,6 +146,7 @@ class BodyRegistry:
         if name in self.by_name or name in self._arriving:
             raise ValueError(f"{name}: a body with this name already exists")
         check_body(name, body, shapes)
+        self._departed.pop(name, None)
         if self._locked:
             if body in self._arriving:
                 raise ValueError(f"{name}: the body is already waiting to join this world")
@@ -170,6 +184,7 @@ class BodyRegistry:
         known = self.name_by_id.get(body.id)
         if known is not None:
             raise ValueError(f"{name}: the body is already called {known!r}")
+        self._departed.pop(name, None)
         if self._locked:
             self._arriving.add(name)
             self._defer(lambda: self._adopted(name, body))
@@ -205,9 +220,58 @@ class BodyRegistry:
         del self.id_by_name[item]
         del self.name_by_id[body.id]
         self._removed(body)
-        # Only the joints in the space: a joint made on the body but never added is not.
-        joints = set(self.space.constraints).intersection(body.constraints)
-        self.space.remove(*body.shapes, *joints, body)
+        space = self.space
+        # Only what is in the space: a joint made on the body but never added is not, nor what
+        # the game took out itself (space.remove) since the last step.
+        joints = set(space.constraints).intersection(body.constraints)
+        parts: list[pymunk.Body | pymunk.Shape | pymunk.Constraint] = [
+            s for s in body.shapes if s.space is space
+        ]
+        parts.extend(joints)
+        if body.space is space:
+            parts.append(body)
+        if parts:
+            self._take_out(*parts)
+
+    def _take_out(self, *parts: pymunk.Body | pymunk.Shape | pymunk.Constraint) -> None:
+        """``space.remove(*parts)``, the registry's own: not a removal for
+        :meth:`forget_departed` to look into (unless the game made one since it last looked)."""
+        space = self.space
+        in_sync = space.removals == self.removals_seen
+        space.remove(*parts)
+        if in_sync:
+            self.removals_seen = space.removals
+
+    def forget_departed(self) -> list[str]:
+        """Forget the named bodies the game took out of the space itself (``space.remove``)
+        since the last call, as :meth:`remove` forgets them (their tracking, gravity rule and
+        mover go; the shapes and joints are the game's, left as it left them); the names, in the
+        order they were added. Looking one up later raises a ``KeyError`` that says it left.
+
+        >>> registry = BodyRegistry()
+        >>> crate = registry.add_box("crate", mass=1.0, size=(1.0, 1.0), position=(0.0, 0.5))
+        >>> registry.space.remove(crate, *crate.shapes)
+        >>> registry.forget_departed(), registry.names
+        (['crate'], [])
+        >>> try:
+        ...     registry.body("crate")
+        ... except KeyError as error:
+        ...     print(error.args[0])
+        no body named 'crate': it was taken out of the space with space.remove (known: none)
+        """
+        space = self.space
+        self.removals_seen = space.removals
+        gone = [name for name, body in self.by_name.items() if body.space is not space]
+        departed = self._departed
+        for name in gone:
+            body = self.by_name.pop(name)
+            del self.id_by_name[name]
+            del self.name_by_id[body.id]
+            departed[name] = None
+            if len(departed) > DEPARTED_REMEMBERED:
+                del departed[next(iter(departed))]
+            self._removed(body)
+        return gone
 
     def _leave(self, name: str) -> None:
         self._leaving.discard(name)
@@ -249,9 +313,9 @@ class BodyRegistry:
 
     def _remove_constraint(self, constraint: pymunk.Constraint) -> None:
         if constraint in self._arriving:
-            self._defer(lambda: self.space.remove(constraint))
+            self._defer(lambda: self._take_out(constraint))
         elif constraint in self.space.constraints:
-            self.space.remove(constraint)
+            self._take_out(constraint)
         else:
             raise ValueError(f"constraint: {constraint!r} is not in this world")
 
@@ -273,6 +337,11 @@ class BodyRegistry:
                     f"{name}: added during this step; it joins when the step ends"
                 ) from None
             known = ", ".join(sorted(self.by_name)) or "none"
+            if name in self._departed:
+                raise KeyError(
+                    f"no body named {name!r}: it was taken out of the space with space.remove "
+                    f"(known: {known})"
+                ) from None
             raise KeyError(f"no body named {name!r} (known: {known})") from None
 
     def body_at(self, point: Vec, radius: float = 0.0) -> str | None:

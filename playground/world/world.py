@@ -30,6 +30,7 @@ from typing import Literal
 import pymunk
 import pymunk.batch as batch
 
+from playground._engine.space import CountingSpace
 from playground.forces.ledger import Category, ForceLedger
 from playground.forces.readings import BodyForces, TrackedReadings
 from playground.forces.tracked import SCALAR_MAX_BODIES
@@ -99,9 +100,11 @@ class World:
     ) -> None:
         self._config = config if config is not None else WorldConfig()
         self._registry = BodyRegistry(added=self._added, removed=self._removed)
-        self.space: pymunk.Space = self._registry.space
-        """The pymunk space (m, kg, s). A body added to it straight (``space.add``) acts like
-        any other; :meth:`adopt` names it, :meth:`track` tracks it."""
+        self.space: CountingSpace = self._registry.space
+        """The pymunk space (m, kg, s; a :class:`pymunk.Space` that counts its removals). A body
+        added to it straight (``space.add``) acts like any other; :meth:`adopt` names it,
+        :meth:`track` tracks it; one taken out with ``space.remove`` leaves the world at the next
+        step (see :meth:`track`)."""
         # Chipmunk keeps an arbiter 3 steps after its contact ends by default; a contact made
         # again from it starts from the old accumulated impulse without applying it, so the
         # arbiter reports an impulse the bodies never received (see ForceSolver). Dropping
@@ -124,8 +127,8 @@ class World:
         self._scalar_max_bodies = SCALAR_MAX_BODIES
         self.timings: dict[Stage, StageTiming] = {s: StageTiming() for s in Stage}
         self._movers: list[Mover] = []
-        # Tracked bodies the world has no name for (added with space.add): each step checks
-        # that they are still in the space (see track).
+        # Tracked bodies the world has no name for (added with space.add): a step after a
+        # space.remove checks that they are still in the space (see track).
         self._anonymous: list[pymunk.Body] = []
         self._stepping = False
         self._schedule = Schedule(self._replan)
@@ -434,10 +437,12 @@ class World:
         ``perceive`` also filters their perceived gravity. From the next step on if the world
         is :attr:`locked`.
 
-        A body without a name may leave the way it came, with ``space.remove``: the next step
-        untracks it before its gravity stage (a body removed by an INPUTS or EVENTS hook is
-        untracked in that step, one removed later in the step in the next), and reading it
-        then raises a ``KeyError`` that says it left. A named body leaves with :meth:`remove`.
+        A body may leave the way it came, with ``space.remove``: the next step untracks it
+        before its gravity stage (a body removed by an INPUTS or EVENTS hook is untracked in that
+        step, one removed later in the step in the next), and reading it then raises a
+        ``KeyError`` that says it left. A named body leaves the world then too, as with
+        :meth:`remove` (its name, tracking, gravity rule and mover go; its shapes and joints are
+        left as the game left them); :meth:`remove` takes it out with its shapes and joints.
 
         >>> world = World()
         >>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))          # m
@@ -486,6 +491,14 @@ class World:
             if tracked.row_of(body) is not None:
                 tracked.untrack(body)
         self._anonymous = [b for b in self._anonymous if b not in items]
+
+    def _departed(self) -> None:
+        """Something was taken out of :attr:`space` with ``space.remove`` since the last look:
+        the named bodies among it leave the world, the nameless tracked ones are untracked (see
+        :meth:`track`)."""
+        self._registry.forget_departed()
+        if self._anonymous:
+            self._untrack_departed()
 
     def _untrack_departed(self) -> None:
         """Untrack the nameless tracked bodies the game took out of :attr:`space` (see
@@ -576,7 +589,8 @@ class World:
         self._gravity.bodies_changed()
 
     def _removed(self, body: pymunk.Body) -> None:
-        """A named body left the registry, still in the space (the registry calls this)."""
+        """A named body left the registry (the registry calls this), still in the space unless
+        the game took it out with ``space.remove``."""
         self._gravity.forget(body.id)
         tracked = self._physics.tracked
         if tracked.row_of(body) is not None:
@@ -638,6 +652,9 @@ class World:
                 "step: the world is already stepping (called from a hook or event of a step); "
                 "change the world from the hook and let the step run on"
             )
+        # The game took something out of the space (space.remove): before anything reads a body.
+        if self.space.removals != self._registry.removals_seen:
+            self._departed()
         if self._plan_dirty:
             self._plan()
         if self._bare:
@@ -667,10 +684,10 @@ class World:
             if (events and events[0][0] <= self.time + EVENT_EARLY) or schedule.event_hooks:
                 schedule.run_events(self)
                 lap(EVENTS)
-            # A nameless tracked body the game took out of the space is untracked now, before
-            # any stage reads it.
-            if self._anonymous:
-                self._untrack_departed()
+            # A body an input or event took out of the space leaves now, before any stage
+            # reads it.
+            if self.space.removals != registry.removals_seen:
+                self._departed()
             # An input or event that tracked or untracked a body changed which implementation
             # serves the tracked bodies: plan again, so the gravity stage hands its field in the
             # form the physics stage now takes.

@@ -252,7 +252,8 @@ def test_the_world_is_composed_not_inherited() -> None:
         assert part in parts, part
     public = {n for n in dir(BodyRegistry) if not n.startswith("_")}
     kept = {"by_name", "id_by_name", "name_by_id", "own", "require", "lock", "unlock"}
-    missing = public - kept - {"run_pending"} - set(dir(World))
+    # The step's own bookkeeping, which World calls itself.
+    missing = public - kept - {"run_pending", "forget_departed"} - set(dir(World))
     assert not missing, missing
 
 
@@ -339,6 +340,67 @@ def test_a_nameless_body_named_later_leaves_by_name() -> None:
     world.remove("crate")
     world.step()
     assert world.tracked_bodies == [] and crate.space is None
+
+
+@pytest.mark.parametrize("how", ["added by name", "adopted"])
+@pytest.mark.parametrize("when", ["between steps", "in INPUTS", "in OBSERVE"])
+def test_a_named_body_taken_out_with_space_remove_leaves_the_world(how: str, when: str) -> None:
+    """Rule (World.track): a named body the game takes out with ``space.remove`` leaves the
+    world at the next step, before its gravity stage (in that step if an INPUTS hook took it),
+    as with ``World.remove``: its name, tracking and gravity rule go, reading it says it left,
+    and the name is free again. Put back and adopted, it reads its weight again."""
+    world = World()
+    if how == "adopted":
+        crate = world.adopt("crate", _crate_on_the_floor(world))
+    else:
+        world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+        crate = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.55))
+    world.track("crate")
+    world.set_gravity_rule("crate", GravityRule(scale=0.5))
+    world.run(0.5)
+    (box,) = crate.shapes
+
+    def take_out(w: World) -> None:
+        w.space.remove(crate, box)
+        w.off(stage, take_out)
+
+    stage = Stage.INPUTS if when == "in INPUTS" else Stage.OBSERVE
+    if when == "between steps":
+        world.space.remove(crate, box)
+    else:
+        world.on(stage, take_out)
+    world.step()
+    left_in_that_step = when != "in OBSERVE"
+    assert world.names == ([] if left_in_that_step else ["crate"])
+    world.step()
+    assert world.names == [] and world.tracked_bodies == [] and world.name_of(crate) is None
+    for read in (world.forces, world.body, world.gravity_rule, world.is_tracked):
+        with pytest.raises(KeyError, match=r"taken out of the space with space\.remove"):
+            read("crate")
+    world.run(0.5)  # stepping on without it
+    crate.position, crate.velocity = (0.0, 0.55), (0.0, 0.0)
+    world.space.add(crate, box)
+    world.adopt("crate", crate)
+    assert world.gravity_rule("crate") == GravityRule()  # its old rule went with its name
+    world.track("crate")
+    world.run(1.0)
+    assert world.forces("crate").support[1] == pytest.approx(98.1, rel=TOL_REST)
+
+
+def test_world_remove_after_space_remove_takes_out_only_what_is_left() -> None:
+    """``World.remove`` of a named body whose body the game already took out with
+    ``space.remove`` (before the world noticed) removes its shapes and joints still in the
+    space, and the world steps on."""
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+    crate = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.55))
+    pin = world.add_constraint(pymunk.PivotJoint(crate, world.space.static_body, (0.0, 0.55)))
+    world.run(0.1)
+    world.space.remove(crate)
+    world.remove("crate")
+    assert not world.space.shapes - {s for s in world.space.static_body.shapes}
+    assert pin not in world.space.constraints and world.names == []
+    world.run(0.1)
 
 
 def test_a_body_of_another_space_is_refused_by_track_and_adopt() -> None:
