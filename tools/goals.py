@@ -126,6 +126,28 @@ GOALS = (
         "operations, and other readings.",
     ),
     Goal(
+        "split_10",
+        "pile, contact split on every body, N = 10 (overhead / bare)",
+        "≤ 4×",
+        4.0,
+        True,
+        "×",
+        "The split reads every arbiter of the space in one batch call and sums each tracked "
+        "body's impulses in a dozen numpy calls; at ten boxes each call costs as much as it "
+        "does at a thousand, and the bare step of ten boxes is a few microseconds.",
+    ),
+    Goal(
+        "split_1000",
+        "same, N = 1000 (overhead / bare)",
+        "≤ 0.5×",
+        0.5,
+        True,
+        "×",
+        "The split's batch read of every arbiter and its numpy sums come on top of the solver "
+        "and filter rows above; a change of the arbiters' ids remakes the plan of which row "
+        "each arbiter's impulse goes to.",
+    ),
+    Goal(
         "field_1000",
         "per-body gravity field, N = 1000 (× uniform)",
         "≤ 1.05×",
@@ -203,6 +225,7 @@ def judge(levels: Sequence[LevelRow], piles: Sequence[PileRow]) -> tuple[GoalRes
     one = [r for r in levels if r.players == 1]
     actors = [r for r in levels if r.players >= 1 and "control" in r.stages]
     solver = {r.bodies: r for r in piles if r.kind == "solver+1€"}
+    split = {r.bodies: r for r in piles if r.kind == "split on"}
     fields = [r for r in piles if r.kind == "field"]
     none = [r for r in piles if r.kind == "no effect"]
     found: dict[str, tuple[float, str]] = {}
@@ -229,6 +252,13 @@ def judge(levels: Sequence[LevelRow], piles: Sequence[PileRow]) -> tuple[GoalRes
             max(r.overhead for r in big),
             ", ".join(f"{r.overhead:.2f}× (N = {r.bodies})" for r in big),
         )
+    for n, key in ((10, "split_10"), (1000, "split_1000")):
+        if n in split:
+            r = split[n]
+            found[key] = (
+                r.overhead,
+                f"{r.overhead:.2f}× (blocks {r.ratio_lo - 1:.2f}–{r.ratio_hi - 1:.2f}×)",
+            )
     if fields:
         r = max(fields, key=lambda x: x.bodies)
         found["field_1000"] = (

@@ -76,7 +76,9 @@ orientation only.
   time of single steps: the median leaves out the steps another process interrupted).
 - **Piles**: columns of 0.5 m boxes resting on a floor. "solver+1€": every box tracked and
   perceived (reverse integration and the 1€ filter without the median-of-3 stage) against bare
-  steps of the same space. "field": a per-body radial field whose centre is 10⁵ m below (flat
+  steps of the same space. "split off", "split on": every box tracked and perceived with the
+  default perception (median-of-3, then 1€), the contact split off or on, against bare steps of
+  the same space (issue 27). "field": a per-body radial field whose centre is 10⁵ m below (flat
   under the pile to 0.2°, so the same physics) against uniform `space.gravity`. "no effect": a world
   using no effect against a bare space holding the same pile.
 

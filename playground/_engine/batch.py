@@ -20,8 +20,6 @@ _READ_ALL = _READ | _F.POSITION
 _READ_FIELD = _F.BODY_ID | _F.POSITION | _F.FORCE | _F.TORQUE
 """What a field alone needs: x, y, fx, fy, torque (no velocities: nothing tracked)."""
 _WRITE = _F.FORCE | _F.TORQUE
-_A = batch.ArbiterFields
-_ARBITERS = _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.IS_FIRST_CONTACT | _A.NORMAL
 
 
 class BodyRows:
@@ -142,22 +140,6 @@ class BodyRows:
         self._out.set_float_buf(data)
         self._out.set_int_buf(self.ids)
         batch.set_space_bodies(space, _WRITE, self._out)
-
-
-def read_arbiters(
-    space: pymunk.Space, buffer: batch.Buffer
-) -> tuple[NDArray[np.uintp], NDArray[np.bool_], NDArray[np.float64]]:
-    """Every arbiter as (id_a, id_b), its first-contact flag and (jx, jy, nx, ny) rows.
-
-    ``total_impulse`` (N·s) is the impulse applied to body A; body B received its negative.
-    The normal points from A to B. First contact: the arbiter's contacts were made this step
-    (not warm-started).
-    """
-    buffer.clear()
-    batch.get_space_arbiters(space, _ARBITERS, buffer)
-    ints = np.frombuffer(buffer.int_buf(), dtype=np.uintp).reshape(-1, 3)
-    floats = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 4).copy()
-    return ints[:, 0:2].copy(), ints[:, 2] != 0, floats
 
 
 def lookup(keys: NDArray[np.uintp], ids: NDArray[np.uintp]) -> NDArray[np.intp]:

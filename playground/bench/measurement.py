@@ -51,7 +51,9 @@ class PileRow:
 
     Attributes:
         kind: ``solver+1€`` (every box tracked and perceived against bare steps of the same
-            space), ``field`` (a per-body radial field against uniform gravity), ``no effect``
+            space), ``split off`` and ``split on`` (the same with the default perception and the
+            contact split off or on), ``field`` (a per-body radial field against uniform
+            gravity), ``no effect``
             (a world against a bare space holding the same pile) or ``scalar/vector`` (the
             scalar implementation against the batch one, every box tracked and perceived).
         bodies: boxes.  us: the measured side, µs per step.  base_us: what it is compared with.

@@ -117,6 +117,7 @@ EFFECTS: dict[str, Callable[[World, int], None] | None] = {
     "tracked solver (1 body)": _track_one,
     "tracked solver (every body)": _track_all,
     "contact split (1 body)": _track_one,
+    "contact split (every body)": _track_all,
     "perceived-gravity filter (1 body)": _perceive_one,
     "controller (1)": _controller,
     "runtime guard off": _no_guard,

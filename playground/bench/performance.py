@@ -7,14 +7,17 @@ it holds on a loaded machine where absolute microseconds move by 2×:
   its space taken before each bare block, so both run the same bodies and contacts), the real-time
   factor at the level's dt, and the mean µs of each stage (``World.timings``);
 - **piles**: every box of a settled pile tracked and perceived (solver + 1€) against bare
-  ``space.step`` of the same space; a per-body gravity field against uniform gravity; a world
-  with no effect against a bare space holding the same pile.
+  ``space.step`` of the same space; the same with the default perception and the contact split
+  off, then on; a per-body gravity field against uniform gravity; a world with no effect
+  against a bare space holding the same pile.
 
 :func:`measure` runs them all; :func:`from_dict` reads a run back from its JSON.
 
->>> m = measure(levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), repeats=1)
+>>> m = measure(
+...     levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), split_sizes=(10,), repeats=1
+... )
 >>> [r.level for r in m.levels], sorted({r.kind for r in m.piles})
-(['rest'], ['field', 'no effect', 'scalar/vector', 'solver+1€'])
+(['rest'], ['field', 'no effect', 'scalar/vector', 'solver+1€', 'split off', 'split on'])
 """
 
 from __future__ import annotations
@@ -49,10 +52,14 @@ __all__ = [
     "measure",
     "no_effect_row",
     "solver_row",
+    "split_row",
 ]
 
 PILE_SIZES = (10, 100, 1000, 3000)
 """Pile sizes measured by default (the performance goals quote 10, 1000 and 3000)."""
+
+SPLIT_SIZES = (10, 100, 1000)
+"""Pile sizes at which the contact split is timed off and on (issue 27 quotes 10 and 1000)."""
 
 CROSSOVER_SIZES = (1, 2, 4, 8, 12, 16, 20, 24, 28, 32, 48)
 """Tracked bodies at which the scalar implementation is timed against the batch one."""
@@ -166,6 +173,17 @@ def solver_row(n: int, repeats: int = REPEATS) -> PileRow:
     )
 
 
+def split_row(n: int, split: bool, repeats: int = REPEATS) -> PileRow:
+    """Every box tracked and perceived (the default perception: median-of-3 and 1€) with the
+    contact split off or on, against bare steps of the same space."""
+    world = pile_world(n, WorldConfig(contact_split=split))
+    world.track(*pile_names(n))
+    space, dt = world.space, world.config.dt
+    _settle(world.step)
+    kind = "split on" if split else "split off"
+    return _pile_row(kind, n, interleave(world.step, lambda: space.step(dt), repeats=repeats))
+
+
 def crossover_row(n: int, repeats: int = REPEATS) -> PileRow:
     """The scalar implementation against the batch one, every box tracked and perceived (the default
     perception): where the ratio passes 1 is where the world should switch."""
@@ -234,11 +252,13 @@ def measure(
     *,
     field_bodies: int = FIELD_BODIES,
     crossover: Sequence[int] = CROSSOVER_SIZES,
+    split_sizes: Sequence[int] = SPLIT_SIZES,
     repeats: int = REPEATS,
     progress: bool = False,
     command: str = "playground bench overhead --json",
 ) -> Measurement:
-    """Time every shipped level (or ``levels``) and the piles of ``sizes``.
+    """Time every shipped level (or ``levels``), the piles of ``sizes`` and the contact split
+    off and on at ``split_sizes``.
 
     ``progress`` shows a bar on stderr when it is a terminal (tqdm).
     """
@@ -248,6 +268,7 @@ def measure(
     jobs: list[Callable[[], LevelRow | PileRow]] = [
         *(lambda n=n: level_row(n, repeats) for n in names),
         *(lambda n=n: solver_row(n, repeats) for n in sizes),
+        *(lambda n=n, s=s: split_row(n, s, repeats) for n in split_sizes for s in (False, True)),
         lambda: field_row(field_bodies, repeats),
         *(lambda n=n: no_effect_row(n, repeats) for n in sorted({min(sizes), field_bodies})),
         *(lambda n=n: crossover_row(n, repeats) for n in crossover),

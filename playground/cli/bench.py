@@ -113,6 +113,7 @@ def measure_run(quick: bool, progress: bool, command: str) -> Measurement:
             sizes=QUICK_SIZES,
             field_bodies=QUICK_SIZES[-1],
             crossover=(1, 32),
+            split_sizes=QUICK_SIZES,
             repeats=QUICK_REPEATS,
             progress=progress,
             command=command,

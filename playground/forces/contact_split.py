@@ -12,10 +12,11 @@ from collections import deque
 
 import numpy as np
 import pymunk
-import pymunk.batch as batch
 from numpy.typing import NDArray
 
-from playground._engine.batch import lookup, read_arbiters
+from playground._engine.arbiters import ArbiterRows
+from playground._engine.batch import lookup
+from playground.forces.impulse_sums import ImpulseSums
 
 __all__ = ["ContactSplit"]
 
@@ -51,7 +52,7 @@ class ContactSplit:
     """
 
     def __init__(self) -> None:
-        self._buffer = batch.Buffer()
+        self._arbiters = ArbiterRows()
         self._keys = np.zeros(0, dtype=np.uintp)  # sorted body ids of the tracked bodies
         self._key_row = np.zeros(0, dtype=np.intp)  # tracked row of each sorted id
         self.contact = np.full((0, 2), np.nan)
@@ -60,8 +61,7 @@ class ContactSplit:
         self.valid = np.zeros(0, dtype=bool)
         # This step's sums: Σ impulses and their normal parts (N·s), and the rows whose sums
         # may hold an impulse the engine did not apply.
-        self._impulse = np.zeros((0, 2))
-        self._normal_impulse = np.zeros((0, 2))
+        self._sums = ImpulseSums()
         self._unknown = np.zeros(0, dtype=bool)
         # Body pairs with an arbiter in each recent substep: (substep stamp, sorted pair keys),
         # newest last, kept only while collision_persistence > 1.
@@ -83,57 +83,47 @@ class ContactSplit:
         tracked row of each."""
         self._keys = keys
         self._key_row = key_row
-        n = len(keys)
-        self._impulse = np.zeros((n, 2))
-        self._normal_impulse = np.zeros((n, 2))
-        self._unknown = np.zeros(n, dtype=bool)
+        self._sums.reset(keys, key_row)
+        self._unknown = np.zeros(len(keys), dtype=bool)
         # The world may have stepped bare (nothing tracked) since the pairs were recorded.
         self._pairs.clear()
 
     def begin(self) -> None:
         """Zero the sums before a step."""
-        self._impulse.fill(0.0)
-        self._normal_impulse.fill(0.0)
+        self._sums.begin()
         self._unknown.fill(False)
 
     def accumulate(self, space: pymunk.Space, stamp: int, rescaled: bool) -> None:
         """Add one substep's arbiter impulses (see ``ForceSolver.after_substep`` for the args)."""
-        pairs, first, data = read_arbiters(space, self._buffer)
+        arbiters = self._arbiters
+        arbiters.read(space)
+        pairs, first = arbiters.pairs, arbiters.first
         stale = self._stale(pairs, first, stamp, int(space.collision_persistence), rescaled)
         if stale is not None:
             for col in (0, 1):
                 hit = lookup(self._keys, pairs[stale, col])
                 self._unknown[self._key_row[hit[hit >= 0]]] = True
-        if len(pairs) == 0:
-            return
-        j = data[:, 0:2]
-        n = data[:, 2:4]
-        jn = n * np.einsum("ij,ij->i", j, n)[:, None]
-        rows, vals = [], []
-        for col, sign in ((0, 1.0), (1, -1.0)):  # body A received +J, body B −J
-            hit = lookup(self._keys, pairs[:, col])
-            arb = np.nonzero(hit >= 0)[0]
-            rows.append(self._key_row[hit[arb]])
-            vals.append(sign * np.hstack([j[arb], jn[arb]]))
-        idx = np.concatenate(rows)
-        if len(idx) == 0:
-            return
-        v = np.vstack(vals)
-        # Chipmunk's arbiter order (and which body is A) follows memory addresses, which differ
-        # between runs: sum each body's impulses in an order set by their values, so that two
-        # builds of a scene give bit-identical sums.
-        order = np.lexsort((v[:, 3], v[:, 2], v[:, 1], v[:, 0], idx))
-        np.add.at(self._impulse, idx[order], v[order, 0:2])
-        np.add.at(self._normal_impulse, idx[order], v[order, 2:4])
+        if len(pairs):
+            self._sums.add(pairs, arbiters.values)
 
     def finish(self, ok: NDArray[np.bool_], engine: NDArray[np.float64], dt: float) -> None:
         """The split of this step for the rows ``ok`` that have a reading (``engine``: (N, 2)
         engine forces, N; ``dt``: the step, s); the other rows keep their last values."""
-        rows_ok = np.nonzero(ok)[0]
-        self.contact[rows_ok] = self._impulse[rows_ok] / dt
-        self.contact_normal[rows_ok] = self._normal_impulse[rows_ok] / dt
-        self.constraint[rows_ok] = engine[rows_ok] - self.contact[rows_ok]
-        self.valid[rows_ok] = True
+        sums = self._sums.sums
+        if ok.all():
+            split = sums / dt
+            self.contact = split[:, 0:2]
+            self.contact_normal = split[:, 2:4]
+            self.constraint = engine - self.contact
+            self.valid = np.ones(len(ok), dtype=bool)
+        else:
+            rows_ok = np.nonzero(ok)[0]
+            self.contact[rows_ok] = sums[rows_ok, 0:2] / dt
+            self.contact_normal[rows_ok] = sums[rows_ok, 2:4] / dt
+            self.constraint[rows_ok] = engine[rows_ok] - self.contact[rows_ok]
+            self.valid[rows_ok] = True
+        if not self._unknown.any():
+            return
         unknown = np.nonzero(ok & self._unknown)[0]
         if len(unknown):
             for name in ("contact", "contact_normal", "constraint"):

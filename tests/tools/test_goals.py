@@ -23,6 +23,8 @@ def test_goals_judge_the_worst_case_each_covers() -> None:
         PileRow("solver+1€", 10, 30.0, 10.0, 3.0, 2.9, 3.1, 2.0),
         PileRow("solver+1€", 1000, 1200.0, 1000.0, 1.2, 1.1, 1.3, 0.2),
         PileRow("solver+1€", 3000, 3150.0, 3000.0, 1.05, 1.0, 1.1, 0.05),
+        PileRow("split on", 10, 45.0, 10.0, 4.5, 4.2, 4.9, 3.5),
+        PileRow("split on", 1000, 1400.0, 1000.0, 1.4, 1.3, 1.5, 0.4),
         PileRow("field", 1000, 1040.0, 1000.0, 1.04, 1.0, 1.1, 0.04),
         PileRow("no effect", 10, 11.0, 10.0, 1.1, 1.0, 1.2, 0.1),
     ]
@@ -37,5 +39,6 @@ def test_goals_judge_the_worst_case_each_covers() -> None:
     assert goals["pile_10"].met and goals["pile_10"].why == ""
     assert goals["pile_large"].value == 0.2 and not goals["pile_large"].met
     assert goals["pile_large"].why  # a missed goal says why
+    assert goals["split_10"].met and goals["split_1000"].met  # overheads 3.5× and 0.4×
     assert goals["field_1000"].met
     assert not goals["no_effect"].met
