@@ -45,6 +45,7 @@ __all__ = [
     "arbiter_callback",
     "arbiter_handle",
     "arbiter_impulse",
+    "arbiter_shape_key",
     "body_id",
     "body_type",
     "c_callback",
@@ -91,6 +92,7 @@ _get_gravity = lib.cpSpaceGetGravity
 _total_impulse = lib.cpArbiterTotalImpulse
 _normal = lib.cpArbiterGetNormal
 _get_bodies = lib.cpArbiterGetBodies
+_get_shapes = lib.cpArbiterGetShapes
 _cast = ffi.cast
 _new_callback = ffi.callback
 _new = ffi.new
@@ -263,3 +265,15 @@ def arbiter_body_ids(arb: ArbiterHandle) -> tuple[int, int]:
         int(_cast("uintptr_t", _get_user_data(a[0]))),
         int(_cast("uintptr_t", _get_user_data(b[0]))),
     )
+
+
+_shape_a = _new("cpShape *[1]")
+_shape_b = _new("cpShape *[1]")
+
+
+def arbiter_shape_key(arb: ArbiterHandle) -> tuple[int, int]:
+    """The addresses of the arbiter's two shapes (``arbiter.shapes``), in that order: the same
+    pair names the same contact in every substep of a step (a new ``cpArbiter`` may reuse a
+    freed one's memory, its shapes' addresses stay theirs while they live)."""
+    _get_shapes(arb, _shape_a, _shape_b)
+    return int(_cast("uintptr_t", _shape_a[0])), int(_cast("uintptr_t", _shape_b[0]))

@@ -179,6 +179,7 @@ class Controller:
         hold(self.world, state.grip, None, self.intent, self.config, self.world.config.dt)
         self.control_state = dataclasses.replace(state, grip=None)
         self.world.remove(self.name)
+        self.senses.detach(self.world)
         for stage, hook in self._hooks:
             self.world.off(stage, hook)
         self.removed = True
@@ -222,12 +223,14 @@ class Controller:
 
     @property
     def load(self) -> float:
-        """Load borne from above in the last step: contacts and the push's reaction, N."""
+        """Load borne from above in the last step, its mean over the substeps: contacts and the
+        push's reaction, N."""
         return self.sensed.load
 
     @property
     def contact_load(self) -> float:
-        """The contacts' part of :attr:`load`, N."""
+        """The contacts' part of :attr:`load`, N: each contact's impulse summed over the
+        step's substeps, over dt."""
         return self.sensed.contact_load
 
     @property

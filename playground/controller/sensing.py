@@ -125,8 +125,10 @@ class Sensed:
         ground: the ground under it (None: the probe found nothing).
         ground_motion: the kinematic ground under it and its velocity and spin (None: none),
             which the next step's probe differentiates.
-        contact_load: force pressing on it along −up through contacts in the last step.
-        load: the load borne from above: ``contact_load`` and the last push's reaction.
+        contact_load: force pressing on it along −up through contacts in the last step: the
+            step's mean over its substeps (each contact's impulse over them, over dt).
+        load: the load borne from above: ``contact_load`` and the last push's reaction (the
+            push's force, written unchanged before every substep: its own mean).
         touching: any contact touches the body.
         balance_short: the last step's balance needed more than its budget while touching
             (None: no balance acted).
@@ -206,11 +208,18 @@ class Senses:
         self._sweep = Sweep(world.space, shape_filter)
         self._reach = Reach(world.space, shape_filter)
         self._contacts = Contacts(body)
+        # With substeps, the contacts add up each substep's impulses: the load is the step's
+        # mean, as the force solver's readings are (pymunk keeps the last substep's only).
+        world.on_substep(self._contacts.gather)
         # The field's uniformity and our gravity rule as of World.gravity_version: they change
         # only through the world's setters, and gravity() reads them again when it has moved.
         self._gravity_version = -1
         self._uniform_field = True
         self._gravity_rule = world.gravity_rule(name)
+
+    def detach(self, world: World) -> None:
+        """Stop reading ``world`` after its substeps (the controller leaves it)."""
+        world.off_substep(self._contacts.gather)
 
     def sense(
         self,
@@ -251,8 +260,8 @@ class Senses:
                 perceived_up = world.perceived_up(name)
 
         ground, motion = self.probe(body, ux, uy, wc.dt, before.ground_motion, config)
-        # Each contact's impulse over the last substep's length.
-        contact_load, touching = self._contacts.load_and_touching(ux, uy, wc.dt / wc.substeps)
+        # Each contact's impulse summed over the step's substeps, over the step: its mean.
+        contact_load, touching = self._contacts.load_and_touching(ux, uy, wc.dt)
         load = contact_load + max(0.0, -(last_push[0] * ux + last_push[1] * uy))
 
         grip = state.grip

@@ -2,9 +2,11 @@
 what the bodies feel.
 
 Three stages of the step live here. PHYSICS writes the ledger's forces, the field's forces and any
-force set straight on a body before every substep (pymunk clears them after each) and steps the
-space; FORCES recovers each tracked body's engine forces by reverse integration; FILTER turns them
-into perceived gravity. The tracked bodies (:class:`~playground.forces.tracked.TrackedSet`) are
+force set straight on a body before every substep (pymunk clears them after each), steps the
+space and, after each substep but the last, calls the substep readers (what pymunk keeps only
+for the substep just run, a contact's impulse, they add up for the step's mean); FORCES
+recovers each tracked body's engine forces by reverse integration; FILTER turns them into
+perceived gravity. The tracked bodies (:class:`~playground.forces.tracked.TrackedSet`) are
 served by whichever implementation the world's plan chose; this stage calls them through their
 one interface (:class:`~playground.forces.tracked.TrackedBodies`).
 """
@@ -45,6 +47,9 @@ class PhysicsStage:
         # stamps of the substeps for the contact split.
         self._space_steps = 0
         self.config = config
+        self.substep_readers: list[Callable[[], None]] = []
+        """Called after each substep of a step but the last (none with one substep); each
+        reads the engine and changes nothing (``World.on_substep``)."""
 
     def configure(self, config: WorldConfig) -> None:
         """Take new settings (the world's config changed)."""
@@ -65,6 +70,7 @@ class PhysicsStage:
         tracked.before_step(field, n)
         split = cfg.contact_split
         space, space_h = self.space, self._space_h
+        readers = self.substep_readers
         for k in range(n):
             if k > 0:
                 tracked.before_substep()
@@ -72,7 +78,11 @@ class PhysicsStage:
             rescaled = split and raw.current_time_step(space_h) != h
             space.step(h)
             self._space_steps += 1
-            tracked.after_substep(last=k == n - 1, stamp=self._space_steps, rescaled=rescaled)
+            last = k == n - 1
+            tracked.after_substep(last=last, stamp=self._space_steps, rescaled=rescaled)
+            if not last:
+                for read in readers:
+                    read()
 
     def solve(self) -> None:
         """FORCES: reverse integration for the tracked bodies."""

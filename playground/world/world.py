@@ -639,6 +639,25 @@ class World:
         ``t`` (s). Events at the same time run in the order they were scheduled."""
         self._schedule.at(t, event)
 
+    def on_substep(self, reader: Callable[[], None]) -> None:
+        """Call ``reader()`` in the PHYSICS stage after each substep of a step but the last
+        (never with ``config.substeps`` 1): a reading that is to be the step's mean over its
+        substeps adds up there what pymunk keeps only for the substep just run (a contact's
+        impulse; the last substep's is still there after the step). It reads the engine and
+        changes nothing: no world call, no body or force written."""
+        self._physics.substep_readers.append(reader)
+
+    def off_substep(self, reader: Callable[[], None]) -> None:
+        """Stop calling ``reader``: the opposite of :meth:`on_substep` (ValueError if it is not
+        called)."""
+        readers = self._physics.substep_readers
+        if reader not in readers:
+            name = getattr(reader, "__name__", repr(reader))
+            raise ValueError(f"reader: {name} is not called after substeps")
+        kept = list(readers)  # a new list: a step calling the old one is not disturbed
+        kept.remove(reader)
+        self._physics.substep_readers = kept
+
     # -- the step --------------------------------------------------------------------------------
 
     def step(self) -> None:

@@ -230,3 +230,25 @@ def test_a_field_alone_moves_bodies_as_the_full_batch_read_does(push: str) -> No
             b.angular_velocity,
         ), name
     assert lean.body("b5").angle != 0.0 or push != "ledger torque"
+
+
+@pytest.mark.parametrize("substeps", [1, 2, 4])
+def test_substep_readers_run_after_each_substep_but_the_last(substeps: int) -> None:
+    """World.on_substep: a reader sees the space after each substep of a step but the last
+    (whose state is still there after the step), never with one substep; off_substep stops it,
+    and stopping one that is not called is an error naming it."""
+    world = _pile(1, WorldConfig(substeps=substeps))
+    seen: list[float] = []
+
+    def reader() -> None:
+        seen.append(world.space.current_time_step)
+
+    world.on_substep(reader)
+    world.run(3 * world.config.dt)
+    h = world.config.dt / substeps
+    assert seen == [h] * (3 * (substeps - 1))
+    world.off_substep(reader)
+    world.step()
+    assert len(seen) == 3 * (substeps - 1)
+    with pytest.raises(ValueError, match="reader: reader is not called"):
+        world.off_substep(reader)
