@@ -122,7 +122,8 @@ class Grabbed:
 
 @dataclass(frozen=True, slots=True)
 class Released:
-    """Let go of what it held (the grab released, or the grip slipped)."""
+    """Let go of what it held (the grab released, the grip slipped, or up on the ledge it
+    climbed)."""
 
     time: float
     """The start of the step it happened in, s of world time."""
@@ -310,12 +311,15 @@ def _events(world: World, watch: _Watch, gravity_moved: bool) -> Iterable[Gamepl
         yield Freed(t, name)
 
     grip = controller.control_state.grip
+    # Climbing onto a ledge, its hands stay on the edge (the joint gives way to the climb's
+    # force): it lets go once up.
+    holding = grip is not None or state is State.CLIMBING
     if grip is not None and not watch.holding:
         held = grip.shape.body
         yield Grabbed(t, name, None if held is None else world.name_of(held))
-    elif grip is None and watch.holding:
+    elif not holding and watch.holding:
         yield Released(t, name)
-    watch.holding = grip is not None
+    watch.holding = holding
 
     if gravity_moved:
         gravity = world.gravity_at(name)

@@ -19,6 +19,7 @@ from playground.controller.laws import Laws
 from playground.controller.sensing import GroundHit, Sensed
 from playground.controller.states import (
     AIRBORNE,
+    CLIMBING,
     CRUSHED,
     GETTING_UP,
     GROUNDED,
@@ -63,6 +64,9 @@ class ControllerForces:
         pushed: the pushed body, where the push acts on it and the force on it (None: no push).
         balance_short: the balance needed more than its budget while touching (None: no
             balance acted); the next step's state machine counts how long.
+        climb: the climb's force onto a ledge on our body (a reading, in ``own`` too).
+        climbed: the dynamic ledge climbed, where the climb's reaction acts on it (its edge)
+            and that reaction (None: none).
     """
 
     hover: Vec = ZERO
@@ -78,6 +82,8 @@ class ControllerForces:
     take_off: tuple[GroundHit, Vec] | None = None
     pushed: tuple[pymunk.Body, Vec, Vec] | None = None
     balance_short: bool | None = None
+    climb: Vec = ZERO
+    climbed: tuple[pymunk.Body, Vec, Vec] | None = None
 
 
 NO_FORCES = ControllerForces()
@@ -94,10 +100,11 @@ def act(
     """The forces of the state just decided (none while off balance), through ``laws``.
 
     Hover and drive act while grounded, getting up or crushed (the drive not while crushed),
-    on walkable ground; air steering while airborne; the take-off's impulse as a force over the
-    step; the push; the balance torque unless the capsule's rotation is locked. Only a dynamic
-    ground takes reactions (the world drops forces on static and kinematic bodies), as SUPPORT
-    forces because they stand in for a contact on both sides.
+    on walkable ground; air steering while airborne; the climb onto a ledge while climbing (its
+    reaction on a dynamic ledge at the edge); the take-off's impulse as a force over the step;
+    the push; the balance torque unless the capsule's rotation is locked. Only a dynamic
+    ground (or ledge) takes reactions (the world drops forces on static and kinematic bodies),
+    as SUPPORT forces because they stand in for a contact on both sides.
     """
     # The take-off step still carries the weight: the forces follow the state it leaves.
     footing = state.footing
@@ -105,7 +112,8 @@ def act(
         return NO_FORCES
     hit = sensed.ground
     dt = sensed.dt
-    hover = drive = push = ZERO
+    hover = drive = push = climb = ZERO
+    climbed: tuple[pymunk.Body, Vec, Vec] | None = None
     balance_torque = 0.0
     own: Forces = []
     reactions: Forces = []
@@ -142,6 +150,12 @@ def act(
         drive = laws.steer(sensed, intent.move, config)
         if drive is not ZERO:
             own.append((drive[0], drive[1], APPLIED))
+    elif footing is CLIMBING and sensed.ledge is not None:
+        held = sensed.ledge
+        climb = laws.climb(sensed, held, config)
+        own.append((climb[0], climb[1], SUPPORT))
+        if held.dynamic:
+            climbed = (held.ledge.body, held.edge, react("climb", climb))
 
     target = sensed.push_target
     if intent.push and target is not None:
@@ -168,20 +182,24 @@ def act(
     # (docs/performance.md, row positional), and one is built every step.
     return ControllerForces(
         hover, drive, grip, push, balance_torque, own, torque, ground, reactions, reaction_torque,
-        take_off, pushed, short,
+        take_off, pushed, short, climb, climbed,
     )  # fmt: skip
 
 
 def exert(world: World, body: pymunk.Body, forces: ControllerForces) -> None:
     """Put one step's ``forces`` into ``world``: the take-off's reaction on the ground, the
-    push on the pushed body, the reactions on the ground (at the hit point), then our own
-    forces and torque, each written once (see :meth:`World.apply_forces`)."""
+    push on the pushed body, the climb's reaction on the ledge, the reactions on the ground (at
+    the hit point), then our own forces and torque, each written once (see
+    :meth:`World.apply_forces`)."""
     if forces.take_off is not None:
         pushed_off, impulse = forces.take_off
         world.apply_impulse(pushed_off.body, impulse, point=pushed_off.point, category=SUPPORT)
     if forces.pushed is not None:
         pushed, point, force = forces.pushed
         world.apply_force(pushed, force, point=point, category=SUPPORT)
+    if forces.climbed is not None:
+        ledge, point, force = forces.climbed
+        world.apply_force(ledge, force, point=point, category=SUPPORT)
     ground = forces.ground
     if ground is not None and (forces.reactions or forces.reaction_torque is not None):
         world.apply_forces(

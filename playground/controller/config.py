@@ -17,6 +17,7 @@ import math
 from dataclasses import dataclass
 
 from playground.limits import (
+    MAX_ACCELERATION,
     MAX_ANGULAR_SPEED,
     MAX_FORCE,
     MAX_FREQUENCY,
@@ -238,6 +239,22 @@ class ControllerConfig:
         unit="m/s",
         ge=0.0,
         le=MAX_SPEED,
+    )
+    ledge_grab: float = param(
+        0.4,
+        doc="How far above the top of the head the hands find a ledge's top edge (from the "
+        "head's cap centre up); its face must lie within radius + ledge_grab of the head.",
+        unit="m",
+        gt=0.0,
+        le=MAX_LENGTH,
+    )
+    ledge_climb_acceleration: float = param(
+        4.0,
+        doc="The most the climb onto a ledge accelerates the body relative to the ledge, on "
+        "top of holding its weight (within the grip budget).",
+        unit="m/s²",
+        gt=0.0,
+        le=MAX_ACCELERATION,
     )
     push_reach: float = param(
         0.5,

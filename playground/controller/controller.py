@@ -69,6 +69,11 @@ class Controller:
       budget for ``balance_loss_time`` while supported loses balance (hover, drive and balance let
       go); once still for ``settle_time`` it gets up over ``getup_time``.
     - **jump**, **grab/hang/climb**, **push**, **gravity switches**: see the config.
+    - **ledge**: grabbing next to a ledge (a walkable top within ``ledge_grab`` above the
+      head) holds its edge with the grip joint on the ledge's own body; a climb up lets go of
+      the joint and a climb force (the weight held, at most ``ledge_climb_acceleration``
+      relative to the ledge, within the grip budget) lifts it clear of the top and carries it
+      over, its reaction on a dynamic ledge (:mod:`~playground.controller.ledge`).
 
     Newton's third law: hover, drive, jump and balance react on the ground body at the hit point,
     push on the pushed body. The reactions are SUPPORT forces on the ground body too, because they
@@ -189,7 +194,8 @@ class Controller:
     @property
     def state(self) -> State:
         """What the state machine is doing (``control_state.state``): GROUNDED, AIRBORNE,
-        HANGING, OFF_BALANCE, GETTING_UP or CRUSHED; :attr:`transition` says when it changed."""
+        HANGING, CLIMBING, OFF_BALANCE, GETTING_UP or CRUSHED (:class:`State` says what each
+        means for an animation); :attr:`transition` says when it changed."""
         return self.control_state.state
 
     @property

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import math
 
+from playground.controller import ledge as ledges
 from playground.controller.config import ControllerConfig
 from playground.controller.sensing import GroundHit, Sensed, height, up_speed
 from playground.controller.states import (
     AIRBORNE,
+    CLIMBING,
     CRUSHED,
     GETTING_UP,
     GROUNDED,
@@ -36,6 +38,9 @@ def decide(
     In order: a new jump press is remembered; a take-off ends once it stops rising; the
     balance's shortfall of the last step is counted; the grip is kept, let go (grab released,
     or the anchors slipped beyond ``grip_slip``) or taken (grab held and a hold within reach);
+    a ledge held by its edge is climbed (its grip let go, the climb's force takes over) on a
+    climb up, until it is up on walkable ground (:func:`~playground.controller.ledge.up`),
+    or the grab is released;
     then the state machine moves on, and a buffered jump takes off if the state allows it
     (grounded, or airborne within ``coyote_time`` of the ground).
     """
@@ -62,6 +67,13 @@ def decide(
     elif sensed.handhold is not None:
         grip = sensed.handhold
         current = HANGING
+    ledge = state.ledge if current is CLIMBING and intent.grab else None
+    if grip is not None and grip.ledge is not None:
+        ledge = grip.ledge
+        if intent.climb > 0.0:
+            # Up onto the ledge: the hands let go of the joint, the climb's force takes over.
+            grip = None
+            current = CLIMBING
 
     grounded_at = state.grounded_at
     still = state.still
@@ -69,6 +81,13 @@ def decide(
     getup_at = state.getup_at
     getup_from = state.getup_from
     on_ground = hit is not None and hit.walkable and not rising
+    climbing = False
+    if ledge is not None and grip is None:
+        # Sensing read the ledge held or about to be climbed (sensed.ledge).
+        hold = sensed.ledge
+        climbing = hold is not None and not (on_ground and ledges.up(sensed.body, hold, config))
+        if not climbing:
+            ledge = None
     last_ground = hit if on_ground else state.last_ground
     if current is OFF_BALANCE:
         still = still + dt if is_still(sensed, hit, config) else 0.0
@@ -86,11 +105,14 @@ def decide(
     elif saturated > config.balance_loss_time:
         # Off balance: let go of any grip; hover, drive and balance stop until it is still.
         grip = None
+        ledge = None
         current = OFF_BALANCE
         still = 0.0
         saturated = 0.0
     elif grip is not None:
         current = HANGING
+    elif climbing:
+        current = CLIMBING
     else:
         # The contact load first: it is zero while hovering, and the threshold is a call.
         pressed = sensed.contact_load > 0.0
@@ -127,7 +149,7 @@ def decide(
     return ControllerState(
         current, intent.jump, jump_pressed_at, grounded_at, rising, last_ground, saturated,
         still, relieved, getup_at, getup_from, grip, take_off_from, intent.gravity,
-        intent.nullify,
+        intent.nullify, ledge,
     )  # fmt: skip
 
 

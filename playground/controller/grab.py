@@ -10,12 +10,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import pymunk
 
 from playground.controller.config import ControllerConfig
 from playground.intents import Intent
 from playground.world.world import World
+
+if TYPE_CHECKING:
+    from playground.controller.ledge import Ledge
 
 __all__ = ["Grip", "Impulses", "handhold", "hold", "slip"]
 
@@ -38,12 +42,15 @@ class Impulses:
 @dataclass(frozen=True, slots=True)
 class Grip:
     """A hold: the pivot joint from our body to the held body, the shape held (the climb
-    slides along it) and the joint's impulse over the last step's substeps. The joint's
-    ``max_force`` is the grip budget, N."""
+    slides along it) and the joint's impulse over the last step's substeps; ``ledge``, the
+    ledge held by its edge (None: a hold anywhere on a body,
+    :func:`~playground.controller.ledge.grip`). The joint's ``max_force`` is the grip budget,
+    N."""
 
     joint: pymunk.PivotJoint
     shape: pymunk.Shape
     impulses: Impulses
+    ledge: Ledge | None = None
 
 
 def handhold(
@@ -90,8 +97,9 @@ def hold(
 ) -> None:
     """Put the state machine's grip into the world: let go of ``before`` if it is not kept, add
     ``after``'s joint if it is new, and slide a kept hold along the held surface at the
-    intent's climb × ``climb_speed`` over the step (``dt``, s). The grip held starts summing
-    its impulse for the coming step."""
+    intent's climb × ``climb_speed`` over the step (``dt``, s); a ledge's edge is not slid
+    along (climbing it is the state machine's CLIMBING). The grip held starts summing its
+    impulse for the coming step."""
     if before is not None and before is not after:
         world.remove(before.joint)
         before.joint.post_solve = None
@@ -100,17 +108,21 @@ def hold(
     after.impulses.total = 0.0
     if after is not before:
         world.add_constraint(after.joint)
-    elif intent.climb != 0.0:
+    elif intent.climb != 0.0 and after.ledge is None:
         climb(after, intent.climb * config.climb_speed * dt)
 
 
 def climb(grip: Grip, distance: float) -> None:
-    """Slide the held anchor ``distance`` (m) along the held shape's surface."""
+    """Slide the held anchor ``distance`` (m) along the held shape's surface, along the face
+    turned to our body (the normal at the anchor itself is undefined: it lies on the surface,
+    where pymunk's gradient is 0/0)."""
     joint = grip.joint
     held = joint.b
     p = held.local_to_world(joint.anchor_b)
-    q = grip.shape.point_query(p)
-    nx, ny = q.gradient
+    nx, ny = grip.shape.point_query(joint.a.position).gradient
     moved = (p.x + ny * distance, p.y - nx * distance)
     on_surface = grip.shape.point_query(moved).point
+    if not (math.isfinite(on_surface.x) and math.isfinite(on_surface.y)):
+        # Exactly on a polygon's face pymunk's nearest point is 0/0: it is the point itself.
+        on_surface = pymunk.Vec2d(*moved)
     joint.anchor_b = held.world_to_local(on_surface)

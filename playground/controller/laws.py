@@ -18,8 +18,10 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
+from playground.controller import ledge
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.config import ControllerConfig
+from playground.controller.ledge import LedgeHold
 from playground.controller.sensing import GroundHit, PushTarget, Sensed, height, up_speed
 from playground.controller.spring import TWO_PI, hover_spring
 from playground.controller.states import GETTING_UP, ControllerState
@@ -31,6 +33,7 @@ __all__ = [
     "Laws",
     "Reacting",
     "balance",
+    "climb",
     "drive",
     "grip",
     "hover",
@@ -40,7 +43,7 @@ __all__ = [
     "steer",
 ]
 
-Reacting = Literal["hover", "drive", "jump", "push"]
+Reacting = Literal["hover", "drive", "jump", "push", "climb"]
 """The laws whose force has a reaction on another body (or, for the push, on us)."""
 
 
@@ -169,6 +172,23 @@ def push(sensed: Sensed, target: PushTarget, config: ControllerConfig) -> Vec:
     return (f * nx, f * ny)
 
 
+def climb(sensed: Sensed, hold: LedgeHold, config: ControllerConfig) -> Vec:
+    """The climb onto the ledge ``hold``: its force on us, N (:func:`~playground.controller.
+    ledge.climb`: the weight held, and at most ``ledge_climb_acceleration`` relative to the
+    ledge, up clear of its top and then over it)."""
+    body = sensed.body
+    return ledge.climb(
+        (body.x, body.y),
+        (body.vx, body.vy),
+        body.mass,
+        sensed.gravity,
+        sensed.up,
+        hold,
+        config,
+        sensed.dt,
+    )
+
+
 def grip(impulse: float, dt: float) -> float:
     """The grip joint's force, N: the step's mean, its impulse summed over the step's substeps
     (N·s) over the step ``dt`` (s), as the force solver's readings are."""
@@ -177,8 +197,8 @@ def grip(impulse: float, dt: float) -> float:
 
 def reaction(law: Reacting, force: Vec) -> Vec:
     """Newton's third law: the force (N) or impulse (N·s) that the ``law``'s ``force`` puts
-    back on the body it pushes against — the ground for the hover, the drive and the jump, us
-    for the push."""
+    back on the body it pushes against — the ground for the hover, the drive and the jump, the
+    ledge for the climb, us for the push."""
     return (-force[0], -force[1])
 
 
@@ -194,5 +214,6 @@ class Laws:
     balance: Callable[[Sensed, GroundHit | None, ControllerConfig], float] = balance
     jump: Callable[[Sensed, GroundHit | None, ControllerConfig], Vec] = jump
     push: Callable[[Sensed, PushTarget, ControllerConfig], Vec] = push
+    climb: Callable[[Sensed, LedgeHold, ControllerConfig], Vec] = climb
     grip: Callable[[float, float], float] = grip
     reaction: Callable[[Reacting, Vec], Vec] = reaction

@@ -23,11 +23,13 @@ from playground._engine.state import (
     space_gravity,
 )
 from playground._engine.sweep import Sweep
-from playground.controller import grab
+from playground.controller import grab, ledge
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.config import ControllerConfig
 from playground.controller.grab import Grip
+from playground.controller.ledge import LedgeHold
 from playground.controller.states import (
+    CLIMBING,
     CRUSHED,
     GETTING_UP,
     GROUNDED,
@@ -141,6 +143,7 @@ class Sensed:
         engine: the engine force on the body in the last step, as the world's solver read it
             (read only while holding or taking a hold; zero otherwise).
         push_target: what the arms could push (only looked for while pushing).
+        ledge: the ledge held by its edge or being climbed, as it is now (None: none).
     """
 
     body: BodyState
@@ -161,6 +164,7 @@ class Sensed:
     handhold: Grip | None = None
     engine: Vec = ZERO
     push_target: PushTarget | None = None
+    ledge: LedgeHold | None = None
 
 
 def up_speed(sensed: Sensed, ground: GroundHit | None) -> float:
@@ -236,7 +240,8 @@ class Senses:
         state, the intent and the last step's push (N, on us) and balance verdict.
 
         Up is the perceived one while supported and the field while airborne (it sees where it
-        will land), fallen or getting up (contacts while lying and rising shake the inner ear).
+        will land), fallen or getting up (contacts while lying and rising shake the inner ear),
+        or on a ledge.
         """
         name = self._name
         body = body_state(self._body)
@@ -244,7 +249,10 @@ class Senses:
         gx, gy = self.gravity(world)
         s = state.state
         perceived_up: Vec | None = None
-        if s in SUPPORTED:
+        # Hanging from a ledge or climbing it, up is the field's: the hands' pull sways with
+        # the body, and its reading fed back into the balance rings (a 2-step oscillation
+        # against a loose 300 kg crate at dt = 1/60 s, levels/ledge_climb.toml).
+        if s in SUPPORTED and state.ledge is None:
             (ux, uy), perceived = world.perceived_up_and_gravity(name)
             perceived_up = (ux, uy)
             if not (math.isfinite(ux) and math.isfinite(uy)):
@@ -266,20 +274,35 @@ class Senses:
 
         grip = state.grip
         handhold = None
-        if grip is None and intent.grab and s is not OFF_BALANCE:
-            handhold = grab.handhold(self._space, self._body, self._filter, config)
+        if grip is None and intent.grab and s is not OFF_BALANCE and s is not CLIMBING:
+            handhold = self.handhold((ux, uy), config)
         holding = grip is not None or handhold is not None
         grip_impulse = grip.impulses.total if grip is not None else 0.0
         slip = grab.slip(grip) if grip is not None and intent.grab else 0.0
         engine = world.forces(name).engine if holding else ZERO
         push_target = self.push_target(body, ground, config) if intent.push else None
+        held = state.ledge
+        if held is None:
+            hand = grip if grip is not None else handhold
+            held = None if hand is None else hand.ledge
+        on_ledge = None if held is None else ledge.held(held)
         # In the order of the fields, positionally: building one with keywords is dearer
         # (docs/performance.md, row positional), and one is built every step.
         return Sensed(
             body, (ux, uy), world.time, wc.dt, wc.substeps, (gx, gy), perceived_up, ground,
             motion, contact_load, load, touching, last_balance_short, grip_impulse, slip,
-            handhold, engine, push_target,
+            handhold, engine, push_target, on_ledge,
         )  # fmt: skip
+
+    def handhold(self, up: Vec, config: ControllerConfig) -> Grip | None:
+        """The grip the hands could take: a ledge's edge within reach first (taken only while
+        not rising past it, so none while rising), else the nearest body within reach."""
+        found = ledge.find(self._space, self._body, self._filter, up, config)
+        if found is None:
+            return grab.handhold(self._space, self._body, self._filter, config)
+        if not ledge.catching(found, self._body, up):
+            return None
+        return ledge.grip(self._body, found, config)
 
     def gravity(self, world: World) -> Vec:
         """The gravity at the body, m/s²: ``world.gravity_at`` in general, and for a field

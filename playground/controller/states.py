@@ -22,10 +22,12 @@ from playground.vec import Vec
 
 if TYPE_CHECKING:
     from playground.controller.grab import Grip
+    from playground.controller.ledge import Ledge
     from playground.controller.sensing import GroundHit
 
 __all__ = [
     "AIRBORNE",
+    "CLIMBING",
     "CRUSHED",
     "GETTING_UP",
     "GROUNDED",
@@ -38,7 +40,20 @@ __all__ = [
 
 
 class State(Enum):
-    """What the controller is doing; the world, the view and tests read it.
+    """What the controller is doing; the world, the view and tests read it, and a game picks
+    its animation by it:
+
+    - GROUNDED: on walkable ground, hover and drive acting: idle, or the walk/run cycle at the
+      speed relative to the ground (``Controller.ground_velocity``).
+    - AIRBORNE: no walkable ground under it (jumping, falling, or a step off an edge within
+      ``coyote_time``, when a jump still works): the jump, or the fall.
+    - HANGING: holding on with its hands (a body anywhere, or a ledge's edge) through the grip
+      joint: the hang, a climb along the held body.
+    - CLIMBING: pulling itself up onto a ledge and over its edge, its hands on the edge: the
+      climb-up; it stands (GROUNDED) once its feet are over the top.
+    - OFF_BALANCE: knocked over, lying or tumbling, no force of its own: the ragdoll.
+    - GETTING_UP: rising back to its feet over ``getup_time``: the get-up.
+    - CRUSHED: pinned under a load heavier than its ``crush_force``: the crouch under it.
 
     >>> State("grounded") is State.GROUNDED, State.CRUSHED.value
     (True, 'crushed')
@@ -50,6 +65,7 @@ class State(Enum):
     OFF_BALANCE = "off_balance"
     GETTING_UP = "getting_up"
     CRUSHED = "crushed"
+    CLIMBING = "climbing"
 
 
 # The members as module names, for the step: reading ``State.X`` goes through the enum's
@@ -60,6 +76,7 @@ HANGING = State.HANGING
 OFF_BALANCE = State.OFF_BALANCE
 GETTING_UP = State.GETTING_UP
 CRUSHED = State.CRUSHED
+CLIMBING = State.CLIMBING
 
 
 @dataclass(slots=True)
@@ -87,6 +104,7 @@ class ControllerState:
             step still carries the weight: its forces follow this state, not ``state``.
         gravity_wish: the own-gravity direction the intent asked for last step.
         nullify_wish: the body whose gravity the intent nullified last step.
+        ledge: the ledge held by its edge or being climbed (None: none).
     """
 
     state: State = AIRBORNE
@@ -104,6 +122,7 @@ class ControllerState:
     take_off_from: State | None = None
     gravity_wish: Vec | None = None
     nullify_wish: str | None = None
+    ledge: Ledge | None = None
 
     @property
     def footing(self) -> State:

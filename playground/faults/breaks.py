@@ -13,10 +13,17 @@ import math
 from collections.abc import Callable, Iterator
 from typing import Any
 
+import pymunk
+
 from playground import movers as movers_mod
+from playground.controller import ledge as ledge_mod
 from playground.controller import switches
+from playground.controller._vec import ZERO
+from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
+from playground.controller.grab import Grip
 from playground.controller.laws import Laws, Reacting
+from playground.controller.ledge import Ledge
 from playground.faults.catalog import register
 from playground.faults.patching import (
     after,
@@ -168,6 +175,59 @@ def _grip_weakened() -> Iterator[None]:
     """The grip joint's force budget drops to 700 N: it holds a 70 kg player's weight but not
     the extra a climbing flyer asks of it."""
     with controller_config(grip_force=lambda _: GRIP_FORCE):
+        yield
+
+
+@register("ledge_grab_off")
+def _ledge_grab_off() -> Iterator[None]:
+    """The hands no longer find a ledge's edge: a grab next to a wall holds its face wherever it
+    touches, and there is no ledge to climb onto."""
+    with replaced(ledge_mod, "find", lambda _: lambda *a, **k: None):
+        yield
+
+
+@register("ledge_climb_off")
+def _ledge_climb_off() -> Iterator[None]:
+    """No climb force: a climb up lets go of the ledge's edge and nothing lifts the body."""
+    with controller_laws(climb=lambda _: lambda *a, **k: ZERO):
+        yield
+
+
+@register("ledge_climb_reaction_off")
+def _ledge_climb_reaction_off() -> Iterator[None]:
+    """The climb's reaction on the ledge is lost (Newton's third law broken): a loose crate no
+    longer feels the player pulling itself up onto it."""
+
+    def make(original: Callable[[Reacting, Vec], Vec]) -> Callable[[Reacting, Vec], Vec]:
+        return lambda law, force: (0.0, 0.0) if law == "climb" else original(law, force)
+
+    with controller_laws(reaction=make):
+        yield
+
+
+@register("ledge_held_in_world")
+def _ledge_held_in_world() -> Iterator[None]:
+    """A ledge's edge is held fixed in the world instead of on the ledge's own body: a moving
+    pillar leaves its player hanging in the air, a loose crate no longer feels its weight."""
+
+    def make(
+        original: Callable[[pymunk.Body, Ledge, ControllerConfig], Grip],
+    ) -> Callable[[pymunk.Body, Ledge, ControllerConfig], Grip]:
+        def grip(body: pymunk.Body, ledge: Ledge, config: ControllerConfig) -> Grip:
+            held = original(body, ledge, config)
+            joint, space = held.joint, ledge.body.space
+            if space is None:
+                return held
+            where = joint.b.local_to_world(joint.anchor_b)
+            pinned = pymunk.PivotJoint(joint.a, space.static_body, joint.anchor_a, where)
+            pinned.max_force = joint.max_force
+            pinned.collide_bodies = False
+            pinned.post_solve = held.impulses.add
+            return dataclasses.replace(held, joint=pinned)
+
+        return grip
+
+    with replaced(ledge_mod, "grip", make):
         yield
 
 
