@@ -17,6 +17,10 @@ from playground.scene.recording import read
 
 INTERRUPT_AFTER = 1.0
 """s after the command is inside ``main``: long enough to be in the middle of its work."""
+PLAY_STARTUP = 5.0
+"""s after ``play`` is inside ``main`` before it is surely stepping: it imports pygame and builds
+its level first, which on a loaded 2-core machine (load 4–8) took more than 1 s (no replay
+steps at 1 s, some at 2 s)."""
 WAIT_READY = 120.0
 """s to wait for the child to stop after Ctrl-C on a loaded machine before giving up."""
 
@@ -108,13 +112,16 @@ def test_existing_recording_is_kept_without_force(tmp_path: Path) -> None:
     assert len(read(out)["time"]) > 0
 
 
-def _interrupt(args: list[str], cwd: Path) -> tuple[int, str]:
-    """Start the command, wait until it is inside ``main``, press Ctrl-C (SIGINT)."""
-    code, err, _ = _interrupt_timed(args, cwd)
+def _interrupt(args: list[str], cwd: Path, after: float = INTERRUPT_AFTER) -> tuple[int, str]:
+    """Start the command, wait until it is inside ``main`` and ``after`` s more, press Ctrl-C
+    (SIGINT)."""
+    code, err, _ = _interrupt_timed(args, cwd, after)
     return code, err
 
 
-def _interrupt_timed(args: list[str], cwd: Path) -> tuple[int, str, float]:
+def _interrupt_timed(
+    args: list[str], cwd: Path, after: float = INTERRUPT_AFTER
+) -> tuple[int, str, float]:
     """:func:`_interrupt`, and the seconds from Ctrl-C to the command's exit."""
     code = (
         "import signal, sys\n"
@@ -136,7 +143,7 @@ def _interrupt_timed(args: list[str], cwd: Path) -> tuple[int, str, float]:
     try:
         assert child.stdout is not None
         assert child.stdout.readline().strip() == "ready"
-        time.sleep(INTERRUPT_AFTER)
+        time.sleep(after)
         child.send_signal(signal.SIGINT)
         pressed = time.perf_counter()
         _, err = child.communicate(timeout=WAIT_READY)
@@ -168,6 +175,7 @@ def test_ctrl_c_during_play_exits_130_and_keeps_the_replay(tmp_path: Path) -> No
     code, err = _interrupt(
         ["play", "sandbox", "--headless", "--frames", "1000000", "--replay-out", str(out)],
         tmp_path,
+        PLAY_STARTUP,
     )
     assert code == EXIT_INTERRUPTED
     assert "interrupted" in _one_line(err)
