@@ -30,6 +30,7 @@ __all__ = [
     "configure_check",
     "configure_list",
     "configure_schema",
+    "declared_notes",
     "load_checked",
     "schema_text",
 ]
@@ -60,6 +61,17 @@ def load_checked(path: Path, sets: tuple[Setting, ...] = ()) -> Level:
         if problems:
             raise LevelError(variant_source(str(path), sets), problems)
     return level
+
+
+def declared_notes(level: Level) -> list[str]:
+    """What ``check`` and ``run`` say of a variant its level declares it cannot support: each
+    covering declaration's key path and reason."""
+    from playground.level.support import matches
+
+    return [
+        f"variants.unsupported.{i} covers this variant (its checks may fail here): {u}"
+        for i, u in matches(level)
+    ]
 
 
 def _setting(text: str) -> Setting:
@@ -96,6 +108,8 @@ def cmd_check(args: argparse.Namespace) -> int:
             level = load_checked(path, sets)
             scene = build(level, variant_source(str(path), sets))
             print(f"ok      {item}: {level.title}")
+            for line in declared_notes(level):
+                print(f"note    {item}: {line}")
             note = _long_run(scene.world.space, level)
             if note:
                 print(f"note    {item}: {note}")

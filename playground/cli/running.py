@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from playground.cli.exits import EXIT_FAILED, EXIT_OK, EXIT_USAGE
-from playground.cli.levelfiles import add_set_option
+from playground.cli.levelfiles import add_set_option, declared_notes
 from playground.cli.preflight import UsageError
 from playground.level.files import find
 from playground.level.loading import load, variant_source
@@ -114,6 +114,7 @@ def cmd_run(args: argparse.Namespace) -> int:
             "wall_seconds": wall,
             **({"set": [str(s) for s in sets]} if sets else {}),
             "checks": [{"name": r.name, "passed": r.passed, "detail": r.detail} for r in results],
+            **({"unsupported": declared_notes(level)} if declared_notes(level) else {}),
             "bodies": bodies,
         }
         if args.profile:
@@ -129,6 +130,8 @@ def cmd_run(args: argparse.Namespace) -> int:
         print(f"{level.title}: {world.steps} steps, {world.time:g} s simulated in {wall:.3f} s")
         for r in results:
             print(f"  {'pass' if r.passed else 'FAIL'}  {r.detail}")
+        for line in declared_notes(level):
+            print(f"  note  {line}")
     if args.profile and not args.json:
         _print_profile(world, profile)
     return EXIT_OK if all(r.passed for r in results) else EXIT_FAILED

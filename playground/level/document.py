@@ -12,6 +12,7 @@ from playground.level.gravity import Gravity, UniformGravity
 from playground.level.joints import Joint
 from playground.level.settings import Settings, Tracking, View
 from playground.level.shapes import Shape
+from playground.level.support import Variants
 from playground.level.timeline import Event, Input, Spawn
 from playground.level.values import Name, Table
 
@@ -48,6 +49,10 @@ class Level(Table):
     events: list[Event] = Field(default_factory=list)
     inputs: list[Input] = Field(default_factory=list)
     expect: list[Expectation] = Field(default_factory=list)
+    variants: Variants = Field(
+        default_factory=lambda: Variants(),
+        description="How the level runs as a variant: the variants it cannot support, and why.",
+    )
     catches: list[Name] = Field(
         default_factory=list,
         description="Breaks (playground faults) its checks must catch, by name.",

@@ -16,6 +16,7 @@ from playground.level.errors import LevelError, Problem
 from playground.level.explain import problems
 from playground.level.references import references
 from playground.level.salvage import salvaged_references
+from playground.level.support import own_problems
 from playground.level.variants import Setting, SettingError, apply
 
 _TOML_WHERE = re.compile(r"\(at line (\d+), column (\d+)\)")
@@ -36,7 +37,11 @@ def loads(text: str, source: str = "<string>", sets: Sequence[Setting] = ()) -> 
         # tomllib parses nested arrays and inline tables recursively.
         raise LevelError(source, [_TOO_DEEP]) from None
     if not sets:
-        return validate(data, source)
+        level = validate(data, source)
+        own = list(own_problems(level))
+        if own:
+            raise LevelError(source, own)
+        return level
     label = variant_source(source, sets)
     try:
         data = apply(data, sets)

@@ -10,7 +10,9 @@ from playground.level.expect_rules import Context, check_expectation
 from playground.level.gravity import UniformGravity
 from playground.level.joints import STATIC
 from playground.level.lifetimes import lifetime_problems
+from playground.level.naming import check_names
 from playground.level.shapes import Ring
+from playground.level.support import support_problems
 from playground.level.timeline import FlipGravity, Remove, Spawn
 
 
@@ -94,6 +96,11 @@ def references(level: Level, assumed: frozenset[str] = frozenset()) -> Iterator[
             continue
         yield from check_expectation(f"expect.{i}", exp, context)
     yield from _check_catches(level)
+    if any(u.checks for u in level.variants.unsupported):
+        # A check's default name needs a valid expectation: named only where one is used.
+        yield from support_problems(level, assumed, check_names(level))
+    else:
+        yield from support_problems(level, assumed)
     yield from lifetime_problems(level)
 
 

@@ -27,6 +27,7 @@ from playground.filters.median import Median3
 from playground.filters.one_euro import OneEuroFilter
 from playground.level.document import Level
 from playground.level.expect import Expectation, Reading
+from playground.level.naming import check_names, name_of
 from playground.level.timeline import Spawn
 from playground.quantities import CHECKED
 from playground.scene import Scene
@@ -66,32 +67,6 @@ def read(scene: Scene, body: str, quantity: str) -> Value:
     return "" if value is None else value
 
 
-def name_of(exp: Expectation) -> str:
-    """A readable default name: ``player.support.y at 2 s``."""
-    if exp.name is not None:
-        return exp.name
-    what = f"{exp.body}.{exp.quantity}"
-    if exp.filtered:
-        what += "_filtered"
-    if exp.relative_to is not None:
-        what += f"-{exp.relative_to}.{exp.quantity}"
-    if exp.minus is not None:
-        what += f"-{_reading_name(exp.minus)}"
-    if exp.angle_to is not None:
-        ref = exp.angle_to
-        to = _reading_name(ref) if isinstance(ref, Reading) else f"[{ref[0]:g}, {ref[1]:g}]"
-        what = f"angle of {what} to {to}"
-    if exp.change:
-        what = f"change of {what}"
-    if exp.component is not None:
-        what += f".{exp.component}"
-    if exp.check == "at":
-        return f"{what} at {exp.t:g} s"
-    if exp.window is None:
-        return f"{what} {exp.check}"
-    return f"{what} {exp.check} in [{exp.window[0]:g}, {exp.window[1]:g}] s"
-
-
 def mass_of(level: Level, body: str) -> float:
     """A body's mass as the level declares it, kg (a prop's, a spawned prop's or an actor's; a
     variant's, with ``--set``): with :data:`G0`, the unit of a check in ``weights_of`` or
@@ -118,11 +93,6 @@ def _own_terms(exp: Expectation, level: Level) -> tuple[float, str]:
     if exp.per_mass_of is not None:
         return mass_of(level, exp.per_mass_of), f"N/kg of {exp.per_mass_of}"
     return 1.0, ""
-
-
-def _reading_name(r: Reading) -> str:
-    scale = "" if r.scale == 1.0 else f"{r.scale:g}·"
-    return f"{scale}{r.body}.{r.quantity}"
 
 
 def _fmt(value: Value, unit: str) -> str:
@@ -412,18 +382,6 @@ class Check:
 
     def _fail(self, detail: str) -> CheckResult:
         return self._verdict(False, detail)
-
-
-def check_names(level: Level) -> list[str]:
-    """The names of a level's checks, made unique (a repeated name gets `` #2``, …)."""
-    seen: dict[str, int] = {}
-    out = []
-    for exp in level.expect:
-        name = name_of(exp)
-        n = seen.get(name, 0)
-        seen[name] = n + 1
-        out.append(f"{name} #{n + 1}" if n else name)
-    return out
 
 
 class Checks:
