@@ -231,7 +231,10 @@ def _same(value: object, wanted: object) -> bool:
 def _describe(c: Condition) -> str:
     parts = []
     if c.values is not None:
-        parts.append(f"{c.key} in {c.values}" if len(c.values) > 1 else f"{c.key} = {c.values[0]}")
+        shown = [f"{v:g}" if _number(v) is not None else repr(v) for v in c.values]
+        parts.append(
+            f"{c.key} in [{', '.join(shown)}]" if len(shown) > 1 else f"{c.key} = {shown[0]}"
+        )
     if c.above is not None:
         parts.append(f"{c.key} > {c.above:g}")
     if c.below is not None:

@@ -70,6 +70,11 @@ class Variant:
         step = f"1/{rate.denominator}" if rate.numerator == 1 else f"{self.dt:g}"
         return f"m×{self.mass:g} dt {step} s{self.substeps}"
 
+    @property
+    def id(self) -> str:
+        """``m2-dt240-s4``: the label in ASCII, for test ids."""
+        return f"m{self.mass:g}-dt{round(1 / self.dt)}-s{self.substeps}"
+
     def settings(self, level: Level) -> tuple[Setting, ...] | None:
         """The ``--set`` settings that make this variant of ``level``; None when it has no
         player and the variant scales the player's mass (there is nothing to scale)."""
