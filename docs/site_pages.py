@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import os
 import posixpath
 import re
@@ -365,3 +366,50 @@ def on_page_markdown(markdown: str, page: Any, config: Any, files: Any) -> str:
     here = posixpath.dirname(page.file.src_uri)
     target = posixpath.relpath("readme.md", here or ".")
     return re.sub(r"\]\((?:\.\./)+README\.md", f"]({target}", markdown)
+
+
+_MD_HREF = re.compile(r'href="(?![a-z][a-z0-9+.-]*:|/|#)([^"#]+\.md)(#[^"]*)?"')
+_log = logging.getLogger("mkdocs.hooks.site_pages")  # under "mkdocs": --strict counts it
+
+
+def notebook_links(
+    html: str, src_uri: str, url: str, pages: Mapping[str, str]
+) -> tuple[str, list[str]]:
+    """A notebook page's links to the site's pages made the site's URLs, and the links whose
+    page does not exist. A notebook links a chapter as Jupyter opens it (``04-filtering.md``);
+    MkDocs rewrites and checks such links only in Markdown pages, so a notebook page's are done
+    here. ``pages``: each page's source path → its URL, both under the site.
+
+    >>> pages = {"chapters/04-filtering.md": "chapters/04-filtering.html", "index.md": "index.html"}
+    >>> html = '<a href="04-filtering.md#lag">4</a><a href="../index.md">1</a><a href="x.md">x</a>'
+    >>> html, missing = notebook_links(html, "chapters/nb.ipynb", "chapters/nb.html", pages)
+    >>> html
+    '<a href="04-filtering.html#lag">4</a><a href="../index.html">1</a><a href="x.md">x</a>'
+    >>> missing
+    ['x.md']
+    """
+    here, at = posixpath.dirname(src_uri), posixpath.dirname(url) or "."
+    missing: list[str] = []
+
+    def site_url(match: re.Match[str]) -> str:
+        target = posixpath.normpath(posixpath.join(here, match[1]))
+        if target not in pages:
+            missing.append(match[1])
+            return match[0]
+        return f'href="{posixpath.relpath(pages[target], at)}{match[2] or ""}"'
+
+    return _MD_HREF.sub(site_url, html), missing
+
+
+def on_page_content(html: str, page: Any, config: Any, files: Any) -> str:
+    """MkDocs hook: a notebook page's links to other pages (see :func:`notebook_links`); a link
+    to no page is a warning, so ``--strict`` fails on it as on a Markdown page's."""
+    if not page.file.src_uri.endswith(".ipynb"):
+        return html
+    pages = {f.src_uri: f.url for f in files.documentation_pages()}
+    html, missing = notebook_links(html, page.file.src_uri, page.file.url, pages)
+    for link in missing:
+        _log.warning(
+            "%s: the notebook links %r, which is no page of the site", page.file.src_uri, link
+        )
+    return html

@@ -1,5 +1,6 @@
-"""Laws of the chapters' notebooks (docs/chapters/*.ipynb): stored without outputs, each with a
-slider whose effect its text explains, and each runs top to bottom.
+"""Laws of the chapters' notebooks (docs/chapters/*-notebook.ipynb): named apart from their
+chapters, stored without outputs, each saying how to run it, each with a slider whose effect its
+text explains, and each runs top to bottom.
 
 Running them needs the ``notebooks`` extra (a Jupyter kernel, nbclient and ipywidgets); without
 it those tests skip, and CI runs them after the main suite (.ci/run). A slider's callback runs
@@ -18,6 +19,9 @@ import pytest
 
 CHAPTERS = Path(__file__).resolve().parent.parent / "docs" / "chapters"
 NOTEBOOKS = sorted(CHAPTERS.glob("*.ipynb"))
+SUFFIX = "-notebook.ipynb"
+"""A chapter's notebook is named ``<chapter>-notebook.ipynb``: the site renders notebooks as
+pages (mkdocs-jupyter), and ``04-filtering.ipynb`` would get the URL of ``04-filtering.md``."""
 KNOBBED = ("04-", "05-", "06-", "07-")
 """Chapters with knobs, each of which has a notebook (filtering, the floating capsule, playing
 with gravity, what accuracy costs)."""
@@ -41,11 +45,40 @@ def source(cell: dict[str, Any]) -> str:
     return text if isinstance(text, str) else "".join(text)
 
 
-def test_every_chapter_with_knobs_has_a_notebook_beside_it() -> None:
-    """A notebook named like its chapter sits beside each chapter that has knobs."""
+def test_every_chapter_with_knobs_has_a_notebook_beside_it_and_links_it() -> None:
+    """A notebook named ``<chapter>-notebook.ipynb`` sits beside each chapter that has knobs;
+    the chapter links it, and it links the chapter."""
     for prefix in KNOBBED:
         (chapter,) = CHAPTERS.glob(f"{prefix}*.md")
-        assert chapter.with_suffix(".ipynb").is_file(), f"no notebook beside {chapter.name}"
+        notebook = chapter.with_name(chapter.stem + SUFFIX)
+        assert notebook.is_file(), f"no {notebook.name} beside {chapter.name}"
+        assert f"]({notebook.name})" in chapter.read_text(encoding="utf-8"), chapter.name
+        text = "".join(source(c) for c in cells(notebook) if c["cell_type"] == "markdown")
+        assert f"]({chapter.name})" in text, notebook.name
+
+
+def test_no_notebook_shares_a_page_url() -> None:
+    """Every notebook is named ``*-notebook.ipynb`` (the site renders only those), and none has
+    the name of a Markdown page but for its suffix (the two would get one URL)."""
+    assert NOTEBOOKS
+    pages = {p.stem for p in CHAPTERS.glob("*.md")}
+    for path in NOTEBOOKS:
+        assert path.name.endswith(SUFFIX), f"{path.name}: name it <chapter>{SUFFIX}"
+        assert path.stem not in pages, f"{path.name}: the URL of {path.stem}.md"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_notebook_says_how_to_run_it_before_its_first_code(path: Path) -> None:
+    """The site shows a notebook without running it: before its first code cell, its text says
+    that the sliders need a kernel, and the commands that start one on this very notebook."""
+    text = ""
+    for cell in cells(path):
+        if cell["cell_type"] == "code":
+            break
+        text += source(cell)
+    assert "kernel" in text and "without outputs" in text, path.name
+    assert "pip install -e '.[notebooks]' jupyterlab" in text, path.name
+    assert f"jupyter lab docs/chapters/{path.name}" in text, path.name
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)

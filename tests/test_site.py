@@ -36,6 +36,12 @@ FIGURE_SHARE = 0.25
 figure at half its width or more, so a quarter of its area or more."""
 CHROMA = 60
 """max(r, g, b) − min(r, g, b) above which a colour is a plot's colour, not a grey of the page."""
+KEYWORD_GREEN = (0, 128, 0)
+"""The notebook theme's colour of Python keywords (``import``, ``def``): on screen only if the
+notebook's code cells were rendered with its styles."""
+KEYWORD_PIXELS = 100
+"""Pixels of that colour the screenshot must hold: a few keywords' worth (one is ~30 px), none on
+a Markdown page, whose code the site's theme colours otherwise)."""
 
 spec = importlib.util.spec_from_file_location("site_pages", ROOT / "docs" / "site_pages.py")
 assert spec is not None and spec.loader is not None
@@ -165,3 +171,24 @@ def test_the_world_api_page_renders(site: Path, tmp_path: Path) -> None:
     for method in ("step", "run", "track", "forces"):
         assert f'id="playground.World.{method}"' in dom, method
     assert "A pymunk space in SI units" in dom  # its docstring
+
+
+def test_a_notebook_renders_with_its_cells_and_says_it_needs_a_kernel(
+    site: Path, tmp_path: Path
+) -> None:
+    """A chapter's notebook is a page: every cell of it (by its id) is in the page, the code
+    highlighted on screen, its link to the chapter made the site's, and the note that the
+    sliders need a kernel is there; the chapter links the notebook's page."""
+    image = pytest.importorskip("PIL.Image")
+    name = "04-filtering-notebook"
+    notebook = json.loads((ROOT / "docs" / "chapters" / f"{name}.ipynb").read_text("utf-8"))
+    dom = _render(site / "chapters" / f"{name}.html", tmp_path / "notebook.png")
+    assert "Filtering a spiky force — turn the knobs" in dom
+    for cell in notebook["cells"]:
+        assert f'id="cell-id={cell["id"]}"' in dom, cell["id"]
+    assert "FloatLogSlider" in dom and "running Jupyter kernel" in dom
+    assert 'href="04-filtering.html"' in dom and 'href="04-filtering.md"' not in dom
+    shot = _pixels(image.open(tmp_path / "notebook.png"))
+    assert _near(shot, np.array(KEYWORD_GREEN)) > KEYWORD_PIXELS
+    chapter = (site / "chapters" / "04-filtering.html").read_text(encoding="utf-8")
+    assert f'href="{name}.html"' in chapter
