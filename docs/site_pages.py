@@ -8,6 +8,7 @@ of the project's own objects, so a test can call them without MkDocs installed.
 from __future__ import annotations
 
 import argparse
+import ast
 import json
 import logging
 import os
@@ -84,10 +85,44 @@ def fenced(text: str) -> str:
     return "\n".join(out)
 
 
+def param_doc(value: str) -> str | None:
+    """A declared parameter's doc and unit, from its declaration's source
+    (``param(default, doc=..., unit=...)``, :mod:`playground.params`), or None for anything else.
+
+    >>> param_doc("param(70.0, doc='Mass when built.', unit='kg', ge=MIN_MASS)")
+    'Mass when built. Unit: kg.'
+    >>> param_doc("param(False, doc='Wants to jump.')"), param_doc("0.5")
+    ('Wants to jump.', None)
+    """
+    try:
+        call = ast.parse(value, mode="eval").body
+    except SyntaxError:
+        return None
+    if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Name)):
+        return None
+    if call.func.id != "param":
+        return None
+    words = {
+        k.arg: k.value.value
+        for k in call.keywords
+        if isinstance(k.value, ast.Constant) and isinstance(k.value.value, str)
+    }
+    if "doc" not in words:
+        return None
+    return f"{words['doc']} Unit: {words['unit']}." if words.get("unit") else words["doc"]
+
+
 class DocstringMarkdown(_GriffeExtension):  # type: ignore[misc, valid-type]
-    """Griffe extension (mkdocs.yml loads it): every docstring through :func:`fenced`."""
+    """Griffe extension (mkdocs.yml loads it): every docstring through :func:`fenced`; a field
+    declared with ``param`` and no docstring of its own gets its declared doc and unit."""
 
     def on_instance(self, *, obj: Any, **kwargs: Any) -> None:
+        if obj.docstring is None and getattr(obj, "kind", None) is not None:
+            doc = param_doc(str(getattr(obj, "value", "")))
+            if doc is not None and obj.kind.value == "attribute":
+                from griffe import Docstring
+
+                obj.docstring = Docstring(doc, parent=obj)
         if obj.docstring is not None:
             obj.docstring.value = fenced(obj.docstring.value)
 

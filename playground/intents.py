@@ -25,9 +25,15 @@ __all__ = ["Idle", "Intent", "IntentSource", "Patrol", "Script"]
 class Intent:
     """One step's wishes. Held values (``grab``, ``push``) act while True.
 
-    ``move`` +1 is "right" when facing with up = up (the tangent is up rotated by −90°); a
-    ``jump`` press is remembered for the controller's jump buffer; a ``gravity`` direction is
+    ``move`` (−1 … 1, a fraction of the controller's ``max_speed``, no unit) +1 is "right" when
+    facing with up = up (the tangent is up rotated by −90°); ``climb`` (−1 … 1 of
+    ``climb_speed``) moves the grip along the held body; a ``jump`` press is remembered for the
+    controller's jump buffer (``jump_buffer``, s); a ``gravity`` direction (no unit) is
     unit-ised.
+
+    >>> wish = Intent(move=-0.5, jump=True)   # walk left at half the top speed, and jump
+    >>> wish.move, wish.jump, wish.grab
+    (-0.5, True, False)
 
     >>> Intent(gravity=(0.0, 2.0)).gravity
     (0.0, 1.0)

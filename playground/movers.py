@@ -50,9 +50,11 @@ class Waypoints:
     """Through a list of points at a constant speed, linear or eased, looping or ping-pong.
 
     Eased legs average the same speed as straight ones. ``"loop"`` returns from the last point
-    to the first; ``"pingpong"`` reverses; ``"once"`` stops at the last point.
+    to the first; ``"pingpong"`` reverses; ``"once"`` stops at the last point. ``points`` (m),
+    ``speed`` (m/s), ``angle`` (rad).
 
-    >>> Waypoints(((0.0, 0.0), (2.0, 0.0)), speed=1.0, mode="pingpong").pose(3.0)
+    >>> path = Waypoints(((0.0, 0.0), (2.0, 0.0)), speed=1.0, mode="pingpong")   # m, m/s
+    >>> path.pose(3.0)                        # at 3 s: out 2 m and 1 m back; (m, m), rad
     ((1.0, 0.0), 0.0)
     """
 

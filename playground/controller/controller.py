@@ -128,6 +128,7 @@ class Controller:
         self.world = world
         self.name = name
         self.config = config
+        """Its body, sensing and budgets (m, kg, s, N; see :class:`ControllerConfig`)."""
         self.laws = laws
         """The force laws it follows (replace one with ``dataclasses.replace``)."""
         self.source = source
@@ -145,12 +146,17 @@ class Controller:
         group = next(_groups)
         shape.filter = pymunk.ShapeFilter(group=group)
         self.body = body
+        """Its pymunk body, named ``name`` in the world (position m, velocity m/s, angle rad)."""
         self.shape = shape
+        """Its capsule: a segment ``height − 2·radius`` long (m) with round ends of ``radius``
+        (m), friction 0.8; a game may set its ``collision_type``."""
         world.add(name, body, shape)
         world.track(name)
         self.senses = Senses(world, name, body, pymunk.ShapeFilter(group=group))
 
         self.intent: Intent = IDLE
+        """What it wants this step: the game's per-frame input (``move`` −1 … 1 of
+        ``max_speed``, ``jump``, …), held until set again; a ``source`` sets it each step."""
         g = world.gravity_at(name)
         self.sensed = Sensed(body=body_state(body), up=unit_or(-g[0], -g[1], (0.0, 1.0)))
         """What the last step sensed (before the first: the body as built, up against gravity)."""
@@ -195,7 +201,19 @@ class Controller:
     def state(self) -> State:
         """What the state machine is doing (``control_state.state``): GROUNDED, AIRBORNE,
         HANGING, CLIMBING, OFF_BALANCE, GETTING_UP or CRUSHED (:class:`State` says what each
-        means for an animation); :attr:`transition` says when it changed."""
+        means for an animation); :attr:`transition` says when it changed.
+
+        >>> from playground import World
+        >>> world = World()
+        >>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))        # m
+        >>> player = Controller(world, "player", position=(0.0, 3.0))        # m: 2 m too high
+        >>> world.step()
+        >>> player.state
+        <State.AIRBORNE: 'airborne'>
+        >>> world.run(1.0)                                                   # s: it falls, lands
+        >>> player.state
+        <State.GROUNDED: 'grounded'>
+        """
         return self.control_state.state
 
     @property
@@ -272,7 +290,14 @@ class Controller:
 
     @property
     def axis(self) -> Vec:
-        """The capsule's own up: its local +y in world coordinates (unit)."""
+        """The capsule's own up: its local +y in world coordinates (a unit vector, no unit).
+
+        >>> from playground import World
+        >>> world = World()
+        >>> player = Controller(world, "player", position=(0.0, 5.0), angle=math.pi / 2)  # m, rad
+        >>> tuple(round(c, 6) for c in player.axis)          # turned a quarter: its head at −x
+        (-1.0, 0.0)
+        """
         r = self.body.rotation_vector
         return (-r.y, r.x)
 

@@ -19,6 +19,21 @@ __all__ = ["BodyForces", "TrackedReadings"]
 class BodyForces:
     """One tracked body's readings after a step (plain values, SI).
 
+    A 10 kg crate at rest on a floor: the floor holds it up with its weight, gravity pulls it
+    down with as much, and an accelerometer on it reads g, upward:
+
+    >>> from playground import World
+    >>> world = World()
+    >>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))                  # m
+    >>> _ = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.55))  # kg, m
+    >>> world.track("crate")
+    >>> world.run(1.0)                                                              # s
+    >>> r = world.forces("crate")
+    >>> r.valid, round(r.support[1], 6), round(r.passive[1], 6)                    # N, N
+    (True, 98.1, -98.1)
+    >>> round(r.specific[1], 6)                                                     # m/s²
+    9.81
+
     Attributes:
         valid: False when the body was not integrated through the whole step (asleep after one of
             its substeps, or absent from the space); the other fields then hold the last valid

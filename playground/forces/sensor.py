@@ -50,16 +50,16 @@ class ForceSensor:
     A 10 kg crate resting on the floor reads its weight, and feels g:
 
     >>> space = pymunk.Space()
-    >>> space.gravity = (0.0, -9.81)
-    >>> floor = pymunk.Segment(space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.05)
-    >>> crate = pymunk.Body(10.0, pymunk.moment_for_box(10.0, (1.0, 1.0)))
-    >>> crate.position = (0.0, 0.55)
-    >>> space.add(floor, crate, pymunk.Poly.create_box(crate, (1.0, 1.0)))
+    >>> space.gravity = (0.0, -9.81)                                             # m/s²
+    >>> floor = pymunk.Segment(space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.05)  # m
+    >>> crate = pymunk.Body(10.0, pymunk.moment_for_box(10.0, (1.0, 1.0)))        # kg, kg·m²
+    >>> crate.position = (0.0, 0.55)                                             # m
+    >>> space.add(floor, crate, pymunk.Poly.create_box(crate, (1.0, 1.0)))        # m
     >>> sensor = ForceSensor(space)
     >>> sensor.track(crate)
     >>> for _ in range(120):
-    ...     sensor.step(1 / 60)
-    >>> round(sensor.readings(crate).support[1], 1)  # N
+    ...     sensor.step(1 / 60)                                                  # s
+    >>> round(sensor.readings(crate).support[1], 1)  # N: m·g
     98.1
     >>> tuple(round(g, 2) for g in sensor.perceived_gravity(crate))  # m/s²
     (0.0, -9.81)
@@ -68,10 +68,10 @@ class ForceSensor:
 
     >>> sensor.before_step(2)
     >>> for _ in range(2):
-    ...     space.step(1 / 120)
+    ...     space.step(1 / 120)                                                  # s
     ...     sensor.after_substep()
-    >>> sensor.finish(1 / 60)
-    >>> round(sensor.readings(crate).support[1], 1)
+    >>> sensor.finish(1 / 60)                                                    # s
+    >>> round(sensor.readings(crate).support[1], 1)  # N
     98.1
     """
 
@@ -103,7 +103,18 @@ class ForceSensor:
 
     def track(self, body: pymunk.Body, *, perceive: bool = True) -> None:
         """Track a dynamic body of the space from the next step on; ``perceive`` also filters
-        its perceived gravity."""
+        its perceived gravity.
+
+        >>> space = pymunk.Space()
+        >>> space.gravity = (0.0, -9.81)                               # m/s²
+        >>> ball = pymunk.Body(1.0, 1.0)                               # kg, kg·m²
+        >>> space.add(ball, pymunk.Circle(ball, 0.1))                  # m
+        >>> sensor = ForceSensor(space)
+        >>> sensor.track(ball)
+        >>> sensor.step(1 / 60)                                        # s
+        >>> sensor.readings(ball).valid, sensor.readings(ball).passive  # N: its weight
+        (True, (0.0, -9.81))
+        """
         if not isinstance(body, pymunk.Body) or body.space is not self.space:
             raise ValueError(f"body: expected a body of the sensor's space, got {body!r}")
         self._tracked.track(body, perceive)
@@ -124,7 +135,20 @@ class ForceSensor:
 
     def step(self, dt: float, substeps: int = 1) -> None:
         """Step the space by ``dt`` seconds in ``substeps`` equal ``space.step`` calls, reading
-        the tracked bodies around them."""
+        the tracked bodies around them.
+
+        >>> space = pymunk.Space()
+        >>> space.gravity = (0.0, -9.81)                         # m/s²
+        >>> ball = pymunk.Body(1.0, 1.0)                         # kg, kg·m²
+        >>> space.add(ball, pymunk.Circle(ball, 0.1))            # m
+        >>> sensor = ForceSensor(space)
+        >>> sensor.track(ball)
+        >>> sensor.step(1 / 60, substeps=2)                      # s: two space.step of 1/120 s
+        >>> round(ball.velocity.y, 6)                            # m/s: −g·dt
+        -0.1635
+        >>> tuple(round(f, 9) for f in sensor.readings(ball).support)  # N: nothing holds it
+        (0.0, 0.0)
+        """
         if not (math.isfinite(dt) and dt > 0.0):
             raise ValueError(f"dt: expected a finite number of seconds > 0, got {dt!r}")
         if not (isinstance(substeps, int) and substeps >= 1):
@@ -221,8 +245,21 @@ class ForceSensor:
         return row
 
     def readings(self, body: pymunk.Body) -> BodyForces:
-        """The last readings of a tracked body (N; see
-        :class:`~playground.forces.readings.BodyForces`)."""
+        """The last readings of a tracked body: forces in N, what an accelerometer on it reads
+        in m/s² (see :class:`~playground.forces.readings.BodyForces`). A force the game sets on
+        the body counts as applied, not as support.
+
+        >>> space = pymunk.Space()
+        >>> ball = pymunk.Body(2.0, 1.0)                         # kg, kg·m²
+        >>> space.add(ball, pymunk.Circle(ball, 0.1))            # m
+        >>> sensor = ForceSensor(space)
+        >>> sensor.track(ball)
+        >>> ball.force = (4.0, 0.0)                              # N: the game's own push
+        >>> sensor.step(1 / 60)                                  # s
+        >>> readings = sensor.readings(ball)
+        >>> readings.applied, readings.support, readings.specific  # N, N, m/s²
+        ((4.0, 0.0), (0.0, 0.0), (0.0, 0.0))
+        """
         return self._tracked.active.reading(self._row(body))
 
     def perceived_gravity(self, body: pymunk.Body) -> Vec:

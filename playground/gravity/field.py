@@ -169,10 +169,12 @@ class Radial:
     """Gravity toward a centre, like a small planet, softened near the centre.
 
     ``g(r) = −g_surface·R²·r / (|r|² + ε²)^{3/2}``: equals ``g_surface`` at radius ``R`` (for ε ≪ R)
-    and stays finite at the centre (Plummer softening).
+    and stays finite at the centre (Plummer softening). ``center`` (m), ``surface_gravity``
+    (g_surface, m/s²), ``radius`` (R, m), ``softening`` (ε, m).
 
     >>> planet = Radial(center=(0.0, 0.0), surface_gravity=9.81, radius=10.0, softening=0.0)
-    >>> planet.at(np.array([[0.0, 10.0], [20.0, 0.0]]), 0.0).round(4).tolist()
+    >>> points = np.array([[0.0, 10.0], [20.0, 0.0]])            # m: on the surface, 2 R out
+    >>> planet.at(points, 0.0).round(4).tolist()                 # at t = 0 s; m/s²: g/4 at 2 R
     [[-0.0, -9.81], [-2.4525, -0.0]]
     """
 

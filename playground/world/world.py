@@ -293,7 +293,16 @@ class World:
     def add(self, name: str, body: pymunk.Body, *shapes: pymunk.Shape) -> pymunk.Body:
         """Add a named body and its shapes (see :meth:`BodyRegistry.add
         <playground.world.registry.BodyRegistry.add>`: names are unique, values are checked
-        against :mod:`playground.limits`)."""
+        against :mod:`playground.limits`); returns the body.
+
+        >>> world = World()
+        >>> ball = pymunk.Body(2.0, pymunk.moment_for_circle(2.0, 0.0, 0.25))  # kg, kg·m²
+        >>> ball.position = (0.0, 3.0)                                         # m
+        >>> world.add("ball", ball, pymunk.Circle(ball, 0.25)) is ball          # 0.25 m radius
+        True
+        >>> world.body("ball") is ball, world.names
+        (True, ['ball'])
+        """
         return self._registry.add(name, body, *shapes)
 
     def adopt(self, name: str, body: pymunk.Body) -> pymunk.Body:
@@ -313,7 +322,14 @@ class World:
         return self._registry.add_constraint(constraint)
 
     def add_static(self, *shapes: pymunk.Shape) -> None:
-        """Add shapes of the space's static body: fixed geometry (m), checked like a body's."""
+        """Add shapes of the space's static body: fixed geometry (m), checked like a body's.
+
+        >>> world = World()
+        >>> ground = pymunk.Circle(world.space.static_body, 10.0)   # m: a small planet's surface
+        >>> world.add_static(ground)
+        >>> ground in world.space.shapes
+        True
+        """
         self._registry.add_static(*shapes)
 
     def add_box(
@@ -348,7 +364,14 @@ class World:
         friction: float = 1.0,
         elasticity: float = 0.0,
     ) -> pymunk.Segment:
-        """A static segment from ``a`` to ``b`` (m), ``radius`` thick (m)."""
+        """A static segment from ``a`` to ``b`` (m), ``radius`` thick (m), with its
+        ``friction`` and ``elasticity`` (coefficients, no unit); returns the shape.
+
+        >>> world = World()
+        >>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))   # m: a 10 m floor at y = 0
+        >>> floor.radius, floor.friction                                # m; no unit
+        (0.05, 1.0)
+        """
         return self._registry.add_static_segment(
             a, b, radius, friction=friction, elasticity=elasticity
         )
@@ -548,7 +571,18 @@ class World:
         return self._physics.tracked.active.kind
 
     def forces(self, body: str | pymunk.Body) -> BodyForces:
-        """The last readings of a tracked body (by name, or the body)."""
+        """The last readings of a tracked body (by name, or the body): forces in N, what an
+        accelerometer on it reads in m/s² (:class:`~playground.forces.readings.BodyForces`).
+
+        >>> world = World()
+        >>> floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))                 # m
+        >>> _ = world.add_box("crate", mass=10.0, size=(1.0, 1.0), position=(0.0, 0.55))  # kg, m
+        >>> world.track("crate")
+        >>> world.run(1.0)                                                             # s
+        >>> readings = world.forces("crate")
+        >>> round(readings.support[1], 6), round(readings.specific[1], 6)  # N: m·g; m/s²: g
+        (98.1, 9.81)
+        """
         return self._physics.tracked.active.reading(self._tracked_row(body))
 
     def perceived_gravity(self, body: str | pymunk.Body) -> Vec:
@@ -556,7 +590,17 @@ class World:
         return self._physics.tracked.active.perceived_gravity(self._tracked_row(body))
 
     def perceived_up(self, body: str | pymunk.Body) -> Vec:
-        """Unit vector opposite the perceived gravity, held through weak readings."""
+        """The unit vector (no unit) opposite the perceived gravity of a tracked body (by name,
+        or the body), held through weak readings: the up a camera turns with.
+
+        >>> world = World(gravity=(-9.81, 0.0))                   # m/s²: gravity to the left
+        >>> wall = world.add_static_segment((-0.3, -5.0), (-0.3, 5.0))                   # m
+        >>> _ = world.add_box("crate", mass=1.0, size=(0.5, 0.5), position=(0.0, 0.0))  # kg, m
+        >>> world.track("crate")
+        >>> world.run(1.0)                                                               # s
+        >>> tuple(round(c, 6) + 0.0 for c in world.perceived_up("crate"))  # away from the wall
+        (1.0, 0.0)
+        """
         return self._physics.tracked.active.perceived_up(self._tracked_row(body))
 
     def perceived_up_and_gravity(self, body: str | pymunk.Body) -> tuple[Vec, Vec]:
@@ -614,7 +658,19 @@ class World:
         self._gravity.bodies_changed()
 
     def add_mover(self, name: str, path: Path) -> Mover:
-        """Drive the kinematic body ``name`` along ``path`` (placed at its pose now)."""
+        """Drive the kinematic body ``name`` along ``path`` (placed at its pose now): each step
+        gives it the velocity (m/s, rad/s) that reaches the path's next pose.
+
+        >>> from playground import Waypoints
+        >>> world = World()
+        >>> lift = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+        >>> _ = world.add("lift", lift, pymunk.Segment(lift, (-1.0, 0.0), (1.0, 0.0), 0.1))  # m
+        >>> path = Waypoints(((0.0, 0.0), (0.0, 2.0)), speed=0.5)    # m, m/s
+        >>> _ = world.add_mover("lift", path)
+        >>> world.run(2.0)                                           # s
+        >>> round(lift.position.y, 6), round(lift.velocity.y, 6)     # m: 0.5 m/s × 2 s; m/s
+        (1.0, 0.5)
+        """
         mover = Mover(self.body(name), path)
         mover.place(self.time)
         self._movers.append(mover)
@@ -665,6 +721,12 @@ class World:
 
         A hook cannot step the world it runs in (:class:`WorldUsageError`): the step it is in
         would go on with the state of a step after it.
+
+        >>> world = World()                                                  # dt = 1/120 s
+        >>> ball = world.add_box("ball", mass=1.0, size=(0.2, 0.2), position=(0.0, 5.0))  # kg, m
+        >>> world.step()
+        >>> world.steps, round(world.time, 6), round(ball.velocity.y, 6)    # s; m/s: −g·dt
+        (1, 0.008333, -0.08175)
         """
         if self._stepping:
             raise WorldUsageError(
