@@ -48,12 +48,15 @@ class _Plan:
     M arbiters' +J rows, their −J rows, then a row of zeros (a missing term).
 
     Attributes:
-        pairs: (N, 2) table rows of the terms of each tracked row with at most two terms.
+        first, second: (N,) table rows of the terms of each tracked row with at most two terms
+            (two arrays: the gathers are then contiguous, several times cheaper for numpy to add
+            than the strided halves of one (N, 2, 4) gather).
         heaped: the tracked rows with three or more terms; (R,).
         heap: (R, K) table rows of their terms, K the most any has (the rest: the zero row).
     """
 
-    pairs: NDArray[np.intp]
+    first: NDArray[np.intp]
+    second: NDArray[np.intp]
     heaped: NDArray[np.intp]
     heap: NDArray[np.intp]
 
@@ -86,7 +89,19 @@ def _plan(
         place[heaped] = np.arange(len(heaped))
         many = ~few
         heap[place[row[many]], slot[many]] = term[many]
-    return _Plan(table, heaped, heap)
+    return _Plan(table[:, 0].copy(), table[:, 1].copy(), heaped, heap)
+
+
+def _pair_in_value_order(
+    a: NDArray[np.float64], b: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """(N, 4) terms ``a`` and ``b`` of each row, swapped where ``b`` comes first in the order of
+    their values (jx, jy, jnx, jny, as Python compares tuples; a tie keeps ``a`` first)."""
+    before = b[:, 3] < a[:, 3]
+    for c in (2, 1, 0):
+        before = (b[:, c] < a[:, c]) | ((b[:, c] == a[:, c]) & before)
+    swap = before[:, None]
+    return np.where(swap, b, a), np.where(swap, a, b)
 
 
 def _in_value_order(terms: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -142,16 +157,18 @@ class ImpulseSums:
         # implementation's (jx·nx + jy·ny), then nx·dot and ny·dot.
         dot = plus[:, 0] * plus[:, 2]
         dot += plus[:, 1] * plus[:, 3]
-        plus[:, 2:4] *= dot[:, None]
+        plus[:, 2] *= dot  # column by column: a third of the cost of plus[:, 2:4] *= dot[:, None]
+        plus[:, 3] *= dot
         np.negative(plus, out=table[m : 2 * m])
         sums = self.sums
-        terms = table[plan.pairs]
+        a = np.take(table, plan.first, axis=0)
+        b = np.take(table, plan.second, axis=0)
         if not self._fresh:
-            terms = _in_value_order(terms)
-        sums += terms[:, 0]
-        sums += terms[:, 1]
+            a, b = _pair_in_value_order(a, b)
+        sums += a
+        sums += b
         if len(plan.heaped):
-            heap = _in_value_order(table[plan.heap])
+            heap = _in_value_order(np.take(table, plan.heap, axis=0))
             rows = plan.heaped
             for k in range(heap.shape[1]):
                 sums[rows] += heap[:, k]

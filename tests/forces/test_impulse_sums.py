@@ -1,11 +1,14 @@
-"""Laws of the batch arbiter sums (:class:`ImpulseSums` over one read of every arbiter): on random
-piles, every tracked body's sums equal the scalar implementation's body-by-body sums
-(:class:`ContactSums`) bit for bit, substep after substep."""
+"""Laws of the arbiter sums read at once: on random piles, every tracked body's sums from one read
+of every arbiter, in numpy (:class:`ImpulseSums`, the batch implementation) and in plain floats
+(:class:`ContactSums` above its crossover, the scalar one), equal the sums of the walk over each
+body's arbiters (:class:`ContactSums` below it) bit for bit, substep after substep."""
 
 from __future__ import annotations
 
 import math
 import random
+from collections.abc import Iterator
+from contextlib import AbstractContextManager, contextmanager
 
 import numpy as np
 import pymunk
@@ -14,6 +17,7 @@ from hypothesis import strategies as st
 
 from playground._engine.arbiters import ArbiterRows
 from playground.forces.impulse_sums import ImpulseSums
+from playground.forces.scalar import contacts
 from playground.forces.scalar.contacts import ContactSums
 from playground.forces.scalar.row import Row
 
@@ -61,6 +65,26 @@ def _arbiter_count(body: pymunk.Body) -> int:
     return len(arbiters)
 
 
+@contextmanager
+def _crossover(min_rows: int, bodies_per_row: int) -> Iterator[None]:
+    """The scalar contact sums' crossover set for the block (hypothesis runs many examples in one
+    test, so not pytest's monkeypatch)."""
+    saved = contacts.ONE_READ_MIN_ROWS, contacts.ONE_READ_BODIES_PER_ROW
+    contacts.ONE_READ_MIN_ROWS, contacts.ONE_READ_BODIES_PER_ROW = min_rows, bodies_per_row
+    try:
+        yield
+    finally:
+        contacts.ONE_READ_MIN_ROWS, contacts.ONE_READ_BODIES_PER_ROW = saved
+
+
+def _walking() -> AbstractContextManager[None]:
+    return _crossover(10**9, 0)  # never one read: every row's arbiters walked
+
+
+def _one_read() -> AbstractContextManager[None]:
+    return _crossover(1, 10**9)  # always one read
+
+
 def _bits(x: float) -> str:
     return float(x).hex()
 
@@ -78,22 +102,27 @@ def _compare(seed: int, bodies: int, spread: float, substeps: int, tracked_share
     arbiters = ArbiterRows()
     rows = [Row(b) for b in tracked]
     scalar = ContactSums()
+    one_read, one_rows = ContactSums(), [Row(b) for b in tracked]
     h = 1.0 / 120.0 / substeps
     stamp = heaped = 0
     for _ in range(STEPS):
         batch.begin()
-        for r in rows:
+        for r in (*rows, *one_rows):
             r.jx = r.jy = r.jnx = r.jny = 0.0
-        for _ in range(substeps):
+        for sub in range(substeps):
             space.step(h)
             stamp += 1
-            scalar.accumulate(rows, space, stamp, rescaled=False)
+            with _walking():
+                scalar.accumulate(rows, space, stamp, rescaled=False)
+            with _one_read():
+                one_read.accumulate(one_rows, space, stamp, rescaled=False, fresh=sub == 0)
             arbiters.read(space)
             if len(arbiters.pairs):
                 batch.add(arbiters.pairs, arbiters.values)
-            for i, r in enumerate(rows):
+            for i, (r, q) in enumerate(zip(rows, one_rows, strict=True)):
                 want = [_bits(v) for v in (r.jx, r.jy, r.jnx, r.jny)]
                 assert [_bits(v) for v in batch.sums[i]] == want, (stamp, i)
+                assert [_bits(v) for v in (q.jx, q.jy, q.jnx, q.jny)] == want, (stamp, i)
             heaped += max(_arbiter_count(r.body) for r in rows) >= 3
     return heaped
 

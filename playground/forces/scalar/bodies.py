@@ -188,7 +188,7 @@ class ScalarBodies:
         if not last:
             self._summed += 1
         if self.contact_split:
-            self._contacts.accumulate(self.rows, self.space, stamp, rescaled)
+            self._contacts.accumulate(self.rows, self.space, stamp, rescaled, fresh=first_sum)
 
     def finish(
         self,
@@ -212,6 +212,7 @@ class ScalarBodies:
         gx, gy = space_gravity
         field = self._field
         parts = ledger.parts if len(ledger) else None
+        split = self.contact_split
         for r in self.rows:
             if not r.seen:
                 r.valid = False
@@ -259,8 +260,24 @@ class ScalarBodies:
             inv_m = r.inv_m
             r.sp = (sx * inv_m, sy * inv_m)
             r.valid = True
-        if self.contact_split:
-            _split(self.rows, dt)
+            if split:
+                # The contact split: contact, its normal part and the constraint's (N); NaN
+                # where an arbiter may report an impulse not applied. A row not read this step
+                # keeps its last values (the loop skipped it above).
+                if r.unknown:
+                    r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
+                    r.split = False
+                else:
+                    cx = r.jx / dt
+                    cy = r.jy / dt
+                    r.cx = cx
+                    r.cy = cy
+                    r.cnx = r.jnx / dt
+                    r.cny = r.jny / dt
+                    r.kx = ex - cx
+                    r.ky = ey - cy
+                    r.split = True
+        if split:
             self._split_held = True
         elif self._split_held:  # the split was just turned off: no row keeps its readings
             if any(r.split for r in self.rows):
@@ -411,22 +428,6 @@ def _forces_on(space: pymunk.Space) -> list[tuple[pymunk.Body, pymunk.Vec2d, flo
         ):
             held.append((body, force, torque))
     return held
-
-
-def _split(rows: list[Row], dt: float) -> None:
-    """Contact, its normal part and the constraint's part of each row read this step (N); NaN
-    where an arbiter may report an impulse not applied; rows not read keep their last values."""
-    for r in rows:
-        if not r.seen:
-            continue
-        if r.unknown:
-            r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
-            r.split = False
-            continue
-        r.cx, r.cy = r.jx / dt, r.jy / dt
-        r.cnx, r.cny = r.jnx / dt, r.jny / dt
-        r.kx, r.ky = r.ex - r.cx, r.ey - r.cy
-        r.split = True
 
 
 def _median_step(r: Row, x: float, y: float) -> tuple[float, float]:

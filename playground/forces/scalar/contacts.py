@@ -1,15 +1,19 @@
 """The contact split of the scalar implementation: each tracked body's arbiter impulses in plain
 floats.
 
-The sums of the batch contact split (:class:`~playground.forces.contact_split.ContactSplit`),
-read body by body with ``Body.each_arbiter`` instead of one batch read of every arbiter in the
-space. Inside that callback Chipmunk presents each arbiter from the body's side:
-``total_impulse`` is the impulse the body received and ``normal`` points away from it, so they
-are the batch implementation's +J, +n for body A and −J, −n for body B, bit for bit (negation is
-exact). A body's impulses are summed in the order of their values, as there, so both
-implementations give the same sums. The arbiters are read through Chipmunk's iterator and
-getters directly (:mod:`playground._engine.raw`: the same doubles, without an ``Arbiter`` object and
-a ``Vec2d`` per read).
+The sums of the batch contact split (:class:`~playground.forces.contact_split.ContactSplit`), in
+plain floats, read one of two ways. With a few bodies in the space per tracked row (and no
+arbiter that may report an impulse not applied, below), every arbiter of the space is read in
+one batch call (:class:`~playground._engine.arbiters.ArbiterValues`) and each row's terms are
+found by a plan made again only when the arbiters' ids change: at ten tracked boxes a third of
+the cost of the walk (:data:`ONE_READ_MIN_ROWS`, :data:`ONE_READ_BODIES_PER_ROW`). Otherwise
+each row's arbiters are walked with ``Body.each_arbiter``. Inside that callback Chipmunk
+presents each arbiter from the body's side: ``total_impulse`` is the impulse the body received
+and ``normal`` points away from it, so they are the batch implementation's +J, +n for body A and
+−J, −n for body B, bit for bit (negation is exact). A body's impulses are summed in the order of
+their values, as there, so both implementations give the same sums. The arbiters are walked
+through Chipmunk's iterator and getters directly (:mod:`playground._engine.raw`: the same
+doubles, without an ``Arbiter`` object and a ``Vec2d`` per read).
 
 An arbiter that may report an impulse Chipmunk did not apply makes its bodies' split unknown for
 the step, by the batch implementation's rule (:meth:`ContactSplit._stale`): a continuing contact
@@ -26,9 +30,21 @@ from typing import Any
 import pymunk
 
 from playground._engine import raw
+from playground._engine.arbiters import ArbiterValues
 from playground.forces.scalar.row import Row
 
-__all__ = ["ContactSums"]
+__all__ = ["ONE_READ_BODIES_PER_ROW", "ONE_READ_MIN_ROWS", "ContactSums"]
+
+ONE_READ_MIN_ROWS = 2
+"""Fewest tracked rows for one read of every arbiter in the space instead of a walk over each
+row's arbiters. Measured with ``python benchmarks/split_pile.py --crossover`` (one read / walks,
+every box tracked): 0.86× (blocks 0.63–1.30) at one box, 0.58× at two, 0.32× at ten; one row in
+a space of ten boxes, 1.10×. At one row the two are even, so the walk keeps it."""
+
+ONE_READ_BODIES_PER_ROW = 10
+"""Most bodies in the space per tracked row for the one read: it reads every arbiter of the space
+(about one a body in a pile), the walks only the tracked rows'. Same benchmark, untracked boxes:
+ten boxes a row 0.64–0.80× at 2 to 8 rows, twenty a row 0.93–1.18×."""
 
 _MASK = (1 << 64) - 1
 """Pair keys wrap at 64 bits, as the batch implementation's ``uint64`` keys do."""
@@ -57,7 +73,17 @@ class ContactSums:
     (1.0, 0.0, False)
     """
 
-    __slots__ = ("_flags", "_impulses", "_pairs", "_visit", "history")
+    __slots__ = (
+        "_arbiters",
+        "_flags",
+        "_impulses",
+        "_pairs",
+        "_plan",
+        "_plan_ids",
+        "_plan_rows",
+        "_visit",
+        "history",
+    )
 
     def __init__(self) -> None:
         self.history: deque[tuple[int, frozenset[int]]] = deque()
@@ -67,15 +93,45 @@ class ContactSums:
         self._flags: list[Flags] = []
         self._pairs = False
         self._visit = raw.arbiter_callback(self._read)
+        # The one read of every arbiter, and its plan: which arbiter's terms go to which row,
+        # made again when the arbiters' ids or the rows change.
+        self._arbiters = ArbiterValues()
+        self._plan: _Plan = ([], [], [])
+        self._plan_ids: list[int] | None = None
+        self._plan_rows: list[Row] | None = None
 
-    def accumulate(self, rows: list[Row], space: pymunk.Space, stamp: int, rescaled: bool) -> None:
+    def accumulate(
+        self,
+        rows: list[Row],
+        space: pymunk.Space,
+        stamp: int,
+        rescaled: bool,
+        *,
+        fresh: bool = False,
+    ) -> None:
         """Add one substep's arbiter impulses to each row's sums (``jx, jy, jnx, jny``) and set
         ``unknown`` on a row with an arbiter that may report an impulse not applied.
 
         ``stamp`` counts the space's steps (1 for its first); ``rescaled``: this substep's length
-        differs from the one before it.
+        differs from the one before it; ``fresh``: every row's sums are +0.0 (the step's first
+        substep).
+
+        With at least :data:`ONE_READ_MIN_ROWS` rows and at most :data:`ONE_READ_BODIES_PER_ROW`
+        bodies in the space per row, when no arbiter can report an impulse not applied (arbiters
+        dropped at once, the warm start not rescaled), every arbiter of the space is read in one
+        batch call instead of walking each row's: the same terms, added in the same order.
         """
         persistence = raw.collision_persistence(raw.space_handle(space))
+        n = len(rows)
+        if (
+            persistence < 2
+            and not rescaled
+            and n >= ONE_READ_MIN_ROWS
+            and len(space.bodies) <= ONE_READ_BODIES_PER_ROW * n
+        ):
+            self.history.clear()  # as below: no pairs are kept with persistence < 2
+            self._add_all(rows, space, fresh)
+            return
         pairs = self._pairs = persistence >= 2
         found: list[tuple[Row, list[Flags]]] = []
         keys: set[int] = set()
@@ -114,6 +170,49 @@ class ContactSums:
             for first, key, _ in flags:
                 if (rescaled and not first) or (first and (cached_all or key in old)):
                     r.unknown = True
+
+    def _add_all(self, rows: list[Row], space: pymunk.Space, fresh: bool) -> None:
+        """Add every row's terms from one read of every arbiter: a row's terms in the order of
+        their values, as the walk adds them, but two on a fresh row as they come ((0 + x) + y
+        = (0 + y) + x, bit for bit). A term of body B is subtracted: x − y is x + (−y)."""
+        arbiters = self._arbiters
+        arbiters.read(space)
+        ids = arbiters.ids
+        if ids is not self._plan_ids or rows is not self._plan_rows:
+            self._plan = _plan(rows, ids)
+            self._plan_ids, self._plan_rows = ids, rows
+        f = arbiters.values
+        ones, twos, more = self._plan
+        for r, k, s in ones:
+            jx, jy, nx, ny = f[k : k + 4]
+            dot = jx * nx + jy * ny
+            r.jx += s * jx
+            r.jy += s * jy
+            r.jnx += s * (nx * dot)
+            r.jny += s * (ny * dot)
+        for r, k, s, k2, s2 in twos:
+            jx, jy, nx, ny = f[k : k + 4]
+            dot = jx * nx + jy * ny
+            ax, ay, anx, any_ = s * jx, s * jy, s * (nx * dot), s * (ny * dot)
+            jx, jy, nx, ny = f[k2 : k2 + 4]
+            dot = jx * nx + jy * ny
+            bx, by, bnx, bny = s2 * jx, s2 * jy, s2 * (nx * dot), s2 * (ny * dot)
+            if not fresh and (bx, by, bnx, bny) < (ax, ay, anx, any_):
+                ax, ay, anx, any_, bx, by, bnx, bny = bx, by, bnx, bny, ax, ay, anx, any_
+            r.jx = r.jx + ax + bx
+            r.jy = r.jy + ay + by
+            r.jnx = r.jnx + anx + bnx
+            r.jny = r.jny + any_ + bny
+        for r, terms in more:
+            impulses = [_term(f, k, s) for k, s in terms]
+            impulses.sort()
+            jx, jy, jnx, jny = r.jx, r.jy, r.jnx, r.jny
+            for vx, vy, vnx, vny in impulses:
+                jx += vx
+                jy += vy
+                jnx += vnx
+                jny += vny
+            r.jx, r.jy, r.jnx, r.jny = jx, jy, jnx, jny
 
     def _cached(
         self,
@@ -160,3 +259,43 @@ class ContactSums:
             lo, hi = (ia, ib) if ia <= ib else (ib, ia)
             key, fit = ((lo << 32) | hi) & _MASK, hi >> 32 == 0
         self._flags.append((raw.is_first_contact(arb) != 0, key, fit))
+
+
+_Plan = tuple[
+    list[tuple[Row, int, float]],
+    list[tuple[Row, int, float, int, float]],
+    list[tuple[Row, list[tuple[int, float]]]],
+]
+"""The rows with one term, two, and three or more: each term as (offset of the arbiter's four
+values, its sign: +1.0 if the row's body is the arbiter's body A, −1.0 if B; a product with ±1.0
+is exact)."""
+
+
+def _plan(rows: list[Row], ids: list[int]) -> _Plan:
+    """Which arbiters' terms go to which row, for arbiters between ``ids`` (id_a, id_b, …)."""
+    row_of = {raw.body_id(r.body): r for r in rows}
+    terms: dict[int, list[tuple[int, float]]] = {}
+    for i in range(0, len(ids), 2):
+        for body_id, sign in ((ids[i], 1.0), (ids[i + 1], -1.0)):
+            if body_id in row_of:
+                terms.setdefault(body_id, []).append((2 * i, sign))
+    ones: list[tuple[Row, int, float]] = []
+    twos: list[tuple[Row, int, float, int, float]] = []
+    more: list[tuple[Row, list[tuple[int, float]]]] = []
+    for body_id, found in terms.items():
+        r = row_of[body_id]
+        if len(found) == 1:
+            ones.append((r, *found[0]))
+        elif len(found) == 2:
+            twos.append((r, *found[0], *found[1]))
+        else:
+            more.append((r, found))
+    return ones, twos, more
+
+
+def _term(f: list[float], k: int, s: float) -> Impulse:
+    """An arbiter's term for body A (``s`` = 1.0) or B (−1.0): the values the walk over the
+    body's arbiters reads (Chipmunk gives B −J and −n; their dot product is J·n, bit for bit)."""
+    jx, jy, nx, ny = f[k : k + 4]
+    dot = jx * nx + jy * ny
+    return (s * jx, s * jy, s * (nx * dot), s * (ny * dot))
