@@ -28,7 +28,7 @@ import playground
 ROOT = Path(__file__).resolve().parent.parent
 BUILD_INPUTS = ("pyproject.toml", "README.md", "LICENSE", "playground", "levels")
 """What the build backend reads: everything else in a checkout stays out of the wheel."""
-SHIPPED_LEVELS = 15
+SHIPPED_LEVELS = 17
 """The README's table of levels."""
 
 
@@ -71,7 +71,7 @@ def wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_wheel_holds_every_subpackage_the_levels_and_the_schema(wheel: Path) -> None:
-    """Every package of the source tree, py.typed, the 15 levels and the schema are in the
+    """Every package of the source tree, py.typed, the 17 levels and the schema are in the
     wheel, under the distribution name ``pymunk-playground`` with its license file."""
     names = set(zipfile.ZipFile(wheel).namelist())
     packages = {
@@ -157,7 +157,7 @@ def _base_python() -> str:
 
 def test_user_install_works_from_an_unrelated_directory(wheel: Path, tmp_path: Path) -> None:
     """``pip install --user`` into a fresh user base; from an empty directory ``playground list``
-    shows the 15 levels, ``playground run rest --json`` passes, and ``python -m playground
+    shows the 17 levels, ``playground run rest --json`` passes, and ``python -m playground
     --version`` prints the version — all from the user base, not from this checkout."""
     userbase = tmp_path / "userbase"
     elsewhere = tmp_path / "elsewhere"

@@ -1,6 +1,6 @@
-"""What a performance run records: a row per shipped level and per pile measurement, and the
-machine they were measured on; as plain JSON-ready values (:meth:`Measurement.to_dict`, NaN
-written as null). :mod:`playground.bench.performance` measures them.
+"""What a performance run records: a row per shipped level, per pile measurement and per crowd,
+and the machine they were measured on; as plain JSON-ready values (:meth:`Measurement.to_dict`,
+NaN written as null). :mod:`playground.bench.performance` measures them.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from typing import Any
 
 from playground.world.schedule import Stage
 
-__all__ = ["STAGES", "LevelRow", "Measurement", "PileRow"]
+__all__ = ["STAGES", "CrowdRow", "LevelRow", "Measurement", "PileRow"]
 
 STAGES = (Stage.INPUTS, Stage.EVENTS, Stage.GRAVITY, Stage.MOVERS, Stage.CONTROL, Stage.PHYSICS,
           Stage.FORCES, Stage.FILTER, Stage.OBSERVE)  # fmt: skip
@@ -72,6 +72,30 @@ class PileRow:
 
 
 @dataclass(frozen=True, slots=True)
+class CrowdRow:
+    """One crowd.
+
+    Attributes:
+        actors: patrolling enemies.  level_us: ``World.step``, µs (ratio × engine_us).
+        engine_us: ``space.step`` of a copy of its space, µs.
+        ratio: level / engine, median of paired blocks.  ratio_lo, ratio_hi: their spread.
+        per_actor_us: level_us / actors.  realtime: dt / level step.
+        path: which path ran the controllers (``"scalar"``: each its own hook; ``"batch"``:
+            as one crowd).
+    """
+
+    actors: int
+    level_us: float
+    engine_us: float
+    ratio: float
+    ratio_lo: float
+    ratio_hi: float
+    per_actor_us: float
+    realtime: float
+    path: str
+
+
+@dataclass(frozen=True, slots=True)
 class Measurement:
     """One run of :func:`~playground.bench.performance.measure`: the machine and the rows."""
 
@@ -80,6 +104,7 @@ class Measurement:
     repeats: int
     levels: tuple[LevelRow, ...]
     piles: tuple[PileRow, ...]
+    crowds: tuple[CrowdRow, ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
         """Plain JSON-ready values (NaN as None)."""

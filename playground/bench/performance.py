@@ -9,15 +9,18 @@ it holds on a loaded machine where absolute microseconds move by 2×:
 - **piles**: every box of a settled pile tracked and perceived (solver + 1€) against bare
   ``space.step`` of the same space; the same with the default perception and the contact split
   off, then on; a per-body gravity field against uniform gravity; a world with no effect
-  against a bare space holding the same pile.
+  against a bare space holding the same pile;
+- **crowds**: N patrolling enemies on one floor against ``space.step`` of a copy of the same space
+  (:mod:`playground.bench.crowd`).
 
 :func:`measure` runs them all; :func:`from_dict` reads a run back from its JSON.
 
 >>> m = measure(
-...     levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), split_sizes=(10,), repeats=1
+...     levels=("rest",), sizes=(10,), field_bodies=10, crossover=(1,), split_sizes=(10,),
+...     crowds=(2,), repeats=1,
 ... )
->>> [r.level for r in m.levels], sorted({r.kind for r in m.piles})
-(['rest'], ['field', 'no effect', 'scalar/vector', 'solver+1€', 'split off', 'split on'])
+>>> [r.level for r in m.levels], sorted({r.kind for r in m.piles}), [r.actors for r in m.crowds]
+(['rest'], ['field', 'no effect', 'scalar/vector', 'solver+1€', 'split off', 'split on'], [2])
 """
 
 from __future__ import annotations
@@ -35,7 +38,8 @@ import numpy as np
 import pymunk
 
 from playground.bench.blocks import Blocks, interleave
-from playground.bench.measurement import STAGES, LevelRow, Measurement, PileRow
+from playground.bench.crowd import CROWD_SIZES, crowd_row
+from playground.bench.measurement import STAGES, CrowdRow, LevelRow, Measurement, PileRow
 from playground.bench.pile import floor_length, pile_names, pile_space, pile_world
 from playground.gravity import Perception, Radial
 from playground.world.config import WorldConfig
@@ -253,25 +257,27 @@ def measure(
     field_bodies: int = FIELD_BODIES,
     crossover: Sequence[int] = CROSSOVER_SIZES,
     split_sizes: Sequence[int] = SPLIT_SIZES,
+    crowds: Sequence[int] = CROWD_SIZES,
     repeats: int = REPEATS,
     progress: bool = False,
     command: str = "playground bench overhead --json",
 ) -> Measurement:
-    """Time every shipped level (or ``levels``), the piles of ``sizes`` and the contact split
-    off and on at ``split_sizes``.
+    """Time every shipped level (or ``levels``), the piles of ``sizes``, the contact split off
+    and on at ``split_sizes`` and the crowds of ``crowds`` actors.
 
     ``progress`` shows a bar on stderr when it is a terminal (tqdm).
     """
     from playground.level.files import shipped
 
     names = sorted(shipped()) if levels is None else list(levels)
-    jobs: list[Callable[[], LevelRow | PileRow]] = [
+    jobs: list[Callable[[], LevelRow | PileRow | CrowdRow]] = [
         *(lambda n=n: level_row(n, repeats) for n in names),
         *(lambda n=n: solver_row(n, repeats) for n in sizes),
         *(lambda n=n, s=s: split_row(n, s, repeats) for n in split_sizes for s in (False, True)),
         lambda: field_row(field_bodies, repeats),
         *(lambda n=n: no_effect_row(n, repeats) for n in sorted({min(sizes), field_bodies})),
         *(lambda n=n: crossover_row(n, repeats) for n in crossover),
+        *(lambda n=n: crowd_row(n, repeats) for n in crowds),
     ]
     bar = _bar(len(jobs)) if progress else None
     rows = []
@@ -283,12 +289,14 @@ def measure(
         bar.close()
     level_rows = tuple(r for r in rows if isinstance(r, LevelRow))
     pile_rows = tuple(r for r in rows if isinstance(r, PileRow))
+    crowd_rows = tuple(r for r in rows if isinstance(r, CrowdRow))
     return Measurement(
         machine=machine(),
         command=command,
         repeats=repeats,
         levels=level_rows,
         piles=pile_rows,
+        crowds=crowd_rows,
     )
 
 
@@ -324,12 +332,15 @@ def from_dict(data: dict[str, Any], source: str = "<data>") -> Measurement:
             for r in data["levels"]
         )
         piles = tuple(PileRow(**r) for r in data["piles"])
+        # A run from before the crowds were measured has none.
+        crowds = tuple(CrowdRow(**r) for r in data.get("crowds", ()))
         return Measurement(
             machine=dict(data["machine"]),
             command=str(data["command"]),
             repeats=int(data["repeats"]),
             levels=levels,
             piles=piles,
+            crowds=crowds,
         )
     except KeyError as exc:
         raise ValueError(

@@ -1,6 +1,7 @@
 """The tables of one performance run (:class:`~playground.bench.measurement.Measurement`) in
-Markdown: every shipped level against its engine, the pile, and where the scalar implementation
-of the tracked bodies stops paying; ``playground bench overhead`` prints them.
+Markdown: every shipped level against its engine, the pile, where the scalar implementation
+of the tracked bodies stops paying, and crowds of actors; ``playground bench overhead`` prints
+them.
 """
 
 from __future__ import annotations
@@ -8,10 +9,16 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from playground.bench.markdown import table
-from playground.bench.measurement import STAGES, LevelRow, Measurement, PileRow
+from playground.bench.measurement import STAGES, CrowdRow, LevelRow, Measurement, PileRow
 from playground.forces.scalar import SCALAR_MAX_BODIES
 
-__all__ = ["crossover_markdown", "levels_markdown", "piles_markdown", "summary_markdown"]
+__all__ = [
+    "crossover_markdown",
+    "crowds_markdown",
+    "levels_markdown",
+    "piles_markdown",
+    "summary_markdown",
+]
 
 
 def levels_markdown(levels: Sequence[LevelRow]) -> str:
@@ -91,11 +98,44 @@ def crossover_markdown(piles: Sequence[PileRow]) -> str:
     )
 
 
+def crowds_markdown(crowds: Sequence[CrowdRow]) -> str:
+    """A crowd per row: level step, engine step, × engine, per actor, × real time (empty
+    without crowds)."""
+    if not crowds:
+        return ""
+    rows = [
+        [
+            str(r.actors),
+            r.path,
+            f"{r.level_us:.0f} µs",
+            f"{r.engine_us:.1f} µs",
+            f"{r.ratio:.0f}× ({r.ratio_lo:.0f}–{r.ratio_hi:.0f})",
+            f"{r.per_actor_us:.1f} µs",
+            f"{r.realtime:.1f}×",
+        ]
+        for r in sorted(crowds, key=lambda r: r.actors)
+    ]
+    header = ["actors", "path", "level step", "engine step", "× engine (blocks)", "per actor",
+              "× real time"]  # fmt: skip
+    return (
+        "## Crowds: many actors on one floor\n\n"
+        "N patrolling enemies (the default controller on a patrol, 2 m apart on one static "
+        "floor, `playground/bench/crowd.py`): the world's step against `space.step` of a copy "
+        "of its space; per actor is the level step over N. Issue 27's goals: per actor ≤ 4 µs at "
+        "100 and 200 actors, 200 actors ≤ 15× the engine and ≥ 10× real time.\n\n"
+        + table(header, rows)
+        + "\n"
+    )
+
+
 def summary_markdown(m: Measurement) -> str:
-    """The levels, pile and crossover tables under headings."""
+    """The levels, pile, crossover and crowd tables under headings."""
     piles = [r for r in m.piles if r.kind != "scalar/vector"]
     cross = crossover_markdown(m.piles)
+    crowds = crowds_markdown(m.crowds)
     return (
         f"## Every shipped level\n\n{levels_markdown(m.levels)}\n\n"
-        f"## The pile\n\n{piles_markdown(piles)}\n" + (f"\n{cross}" if cross else "")
+        f"## The pile\n\n{piles_markdown(piles)}\n"
+        + (f"\n{cross}" if cross else "")
+        + (f"\n{crowds}" if crowds else "")
     )

@@ -38,6 +38,9 @@ QUICK_LEVELS = ("rest",)
 QUICK_SIZES = (10, 1000)
 """Piles timed with ``--quick``: the smallest and the smallest large size the goals quote."""
 
+QUICK_CROWDS = (1, 10)
+"""Crowds (actors) timed with ``--quick``."""
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the ``accuracy`` and ``overhead`` subcommands."""
@@ -106,7 +109,8 @@ def run(args: argparse.Namespace) -> int:
 
 
 def measure_run(quick: bool, progress: bool, command: str) -> Measurement:
-    """The levels and the piles (``quick``: one level, two piles, 2 blocks)."""
+    """The levels, the piles and the crowds (``quick``: one level, two piles, two crowds, 2
+    blocks)."""
     if quick:
         return performance.measure(
             levels=QUICK_LEVELS,
@@ -114,6 +118,7 @@ def measure_run(quick: bool, progress: bool, command: str) -> Measurement:
             field_bodies=QUICK_SIZES[-1],
             crossover=(1, 32),
             split_sizes=QUICK_SIZES,
+            crowds=QUICK_CROWDS,
             repeats=QUICK_REPEATS,
             progress=progress,
             command=command,

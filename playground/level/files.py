@@ -68,7 +68,7 @@ def shipped() -> dict[str, Path]:
     """Levels by name (file stem): those in ``$PLAYGROUND_LEVELS`` first, then the package's.
 
     >>> sorted(shipped())[:3]
-    ['bounce', 'crusher', 'elevator']
+    ['bounce', 'crowd', 'crusher']
     """
     found: dict[str, Path] = {}
     for d in levels_dirs():

@@ -48,12 +48,24 @@ def at_rest(ctrl: Controller) -> bool:
     return body.velocity == (0.0, 0.0) and body.angular_velocity == 0.0
 
 
-STARTS = [
-    (level, name)
-    for level in shipped()
-    for name, actor in ((a.name, a) for a in load(find(level)).actors)
-    if actor.velocity == (0.0, 0.0) and actor.angular_velocity == 0.0
-]
+START_SAMPLE = 8
+"""Most actors of one level checked (spread evenly over its list): a crowd's 122 are placed alike,
+and each case builds and steps the whole level."""
+
+
+def _placed_at_rest(level: str) -> list[str]:
+    names = [
+        a.name
+        for a in load(find(level)).actors
+        if a.velocity == (0.0, 0.0) and a.angular_velocity == 0.0
+    ]
+    if len(names) <= START_SAMPLE:
+        return names
+    last = len(names) - 1
+    return [names[round(k * last / (START_SAMPLE - 1))] for k in range(START_SAMPLE)]
+
+
+STARTS = [(level, name) for level in shipped() for name in _placed_at_rest(level)]
 
 
 def test_the_issue_levels_are_covered() -> None:
