@@ -153,3 +153,55 @@ def lookup(keys: NDArray[np.uintp], ids: NDArray[np.uintp]) -> NDArray[np.intp]:
     pos = np.searchsorted(keys, ids)
     pos_c = np.minimum(pos, len(keys) - 1)
     return np.where(keys[pos_c] == ids, pos_c, -1).astype(np.intp)
+
+
+_POSES = _F.BODY_ID | _F.POSITION | _F.ANGLE | _F.VELOCITY | _F.ANGULAR_VELOCITY
+
+
+class Poses:
+    """The poses of a fixed list of bodies, read for every body of the space in one batch call
+    and picked out by id: (k, 6) rows of x, y (m), angle (rad), vx, vy (m/s), angular velocity
+    (rad/s), the very doubles the bodies' properties hold. Rows follow the list's order
+    (``ids``), whatever order the space keeps its bodies in.
+
+    >>> space = pymunk.Space()
+    >>> body = pymunk.Body(1.0, 1.0)
+    >>> body.position, body.velocity = (1.0, 2.0), (3.0, 4.0)
+    >>> space.add(body, pymunk.Circle(body, 0.5))
+    >>> Poses().read(space, np.array([body.id], dtype=np.uintp)).tolist()
+    [[1.0, 2.0, 0.0, 3.0, 4.0, 0.0]]
+    """
+
+    __slots__ = ("_at", "_buffer", "_for", "_id_bytes")
+
+    def __init__(self) -> None:
+        self._buffer = batch.Buffer()
+        self._id_bytes = b""
+        self._for: NDArray[np.uintp] | None = None
+        self._at = np.zeros(0, dtype=np.intp)
+
+    def read(self, space: pymunk.Space, ids: NDArray[np.uintp]) -> NDArray[np.float64]:
+        """The rows of the bodies ``ids`` (each in the space; KeyError for one that is not)."""
+        buffer = self._buffer
+        buffer.clear()
+        batch.get_space_bodies(space, _POSES, buffer)
+        raw = bytes(buffer.int_buf())
+        if raw != self._id_bytes or self._for is not ids:
+            order = np.frombuffer(raw, dtype=np.uintp)
+            row = {int(b): i for i, b in enumerate(order.tolist())}
+            self._at = np.array([row[int(b)] for b in ids.tolist()], dtype=np.intp)
+            self._id_bytes = raw
+            self._for = ids
+        rows = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 6)
+        return rows[self._at]
+
+
+_TOUCHING = batch.ArbiterFields.BODY_A_ID | batch.ArbiterFields.BODY_B_ID
+
+
+def touching_ids(space: pymunk.Space, buffer: batch.Buffer) -> NDArray[np.uintp]:
+    """The ids of the bodies of every arbiter of the space (each body once per arbiter it has:
+    a body absent has no contact), in one batch call."""
+    buffer.clear()
+    batch.get_space_arbiters(space, _TOUCHING, buffer)
+    return np.frombuffer(buffer.int_buf(), dtype=np.uintp)

@@ -52,7 +52,9 @@ def crowd_world(n: int) -> World:
 def path_of(world: World) -> str:
     """Which path runs the world's controllers: ``"batch"`` if a crowd does, else
     ``"scalar"``."""
-    return "scalar"
+    from playground.controller.crowd import Crowd
+
+    return "batch" if Crowd.of(world).active else "scalar"
 
 
 def crowd_row(n: int, repeats: int = 11) -> CrowdRow:

@@ -22,6 +22,7 @@ from playground.controller import switches
 from playground.controller._vec import unit_or
 from playground.controller.action import NO_FORCES, ControllerForces, act, exert
 from playground.controller.config import ControllerConfig
+from playground.controller.crowd import Crowd
 from playground.controller.decision import decide
 from playground.controller.grab import hold
 from playground.controller.laws import Laws
@@ -158,14 +159,13 @@ class Controller:
         """What it wants this step: the game's per-frame input (``move`` −1 … 1 of
         ``max_speed``, ``jump``, …), held until set again; a ``source`` sets it each step."""
         g = world.gravity_at(name)
-        self.sensed = Sensed(body=body_state(body), up=unit_or(-g[0], -g[1], (0.0, 1.0)))
-        """What the last step sensed (before the first: the body as built, up against gravity)."""
-        self.control_state = ControllerState()
-        """The state after the last step's decisions."""
-        self.last_forces: ControllerForces = NO_FORCES
-        """The forces of the last step."""
-        self.transition: Transition | None = None
-        """The change of :attr:`state` in the last step (None: it stayed)."""
+        self._sensed = Sensed(body=body_state(body), up=unit_or(-g[0], -g[1], (0.0, 1.0)))
+        self._control_state = ControllerState()
+        self._last_forces: ControllerForces = NO_FORCES
+        self._transition: Transition | None = None
+        self.stale: Crowd | None = None
+        """The crowd that ran this controller's last step, whose readings it has not built yet
+        (None: the readings are up to date)."""
 
         self.removed = False
         self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self.step)]
@@ -173,6 +173,65 @@ class Controller:
             self._hooks.insert(0, (Stage.INPUTS, self.read_source))
         for stage, hook in self._hooks:
             world.on(stage, hook)
+        self.crowd = Crowd.of(world)
+        """The crowd of the world's controllers (it runs them as one when they are many)."""
+        self.crowd.join(self)
+
+    # -- the readings of the last step (built from the crowd's arrays when it ran them) ----------
+
+    @property
+    def sensed(self) -> Sensed:
+        """What the last step sensed (before the first: the body as built, up against
+        gravity)."""
+        if self.stale is not None:
+            self.stale.materialize(self)
+        return self._sensed
+
+    @sensed.setter
+    def sensed(self, value: Sensed) -> None:
+        self._sensed = value
+
+    @property
+    def control_state(self) -> ControllerState:
+        """The state after the last step's decisions."""
+        if self.stale is not None:
+            self.stale.materialize(self)
+        return self._control_state
+
+    @control_state.setter
+    def control_state(self, value: ControllerState) -> None:
+        self._control_state = value
+
+    @property
+    def last_forces(self) -> ControllerForces:
+        """The forces of the last step."""
+        if self.stale is not None:
+            self.stale.materialize(self)
+        return self._last_forces
+
+    @last_forces.setter
+    def last_forces(self, value: ControllerForces) -> None:
+        self._last_forces = value
+
+    @property
+    def transition(self) -> Transition | None:
+        """The change of :attr:`state` in the last step (None: it stayed)."""
+        if self.stale is not None:
+            self.stale.materialize(self)
+        return self._transition
+
+    @transition.setter
+    def transition(self, value: Transition | None) -> None:
+        self._transition = value
+
+    default_laws: Laws = DEFAULT_LAWS
+    """The laws a crowd runs on arrays (a controller with others runs its own step)."""
+
+    @staticmethod
+    def unpatched() -> bool:
+        """Whether ``Controller.step`` is the one defined here (a break may patch it; a crowd
+        then runs every controller through it)."""
+        return Controller.step is SCALAR_STEP
 
     def tune_hover(self, frequency: float, damping: float) -> None:
         """Set the hover spring's frequency (Hz) and damping ratio from the next step on (a live
@@ -189,10 +248,13 @@ class Controller:
         state = self.control_state
         hold(self.world, state.grip, None, self.intent, self.config, self.world.config.dt)
         self.control_state = dataclasses.replace(state, grip=None)
+        # An active crowd runs its members' CONTROL step: theirs is not registered.
+        owned = self.crowd.leave(self)
         self.world.remove(self.name)
         self.senses.detach(self.world)
         for stage, hook in self._hooks:
-            self.world.off(stage, hook)
+            if not (owned and stage is Stage.CONTROL):
+                self.world.off(stage, hook)
         self.removed = True
 
     # -- reading ---------------------------------------------------------------------------------
@@ -334,12 +396,14 @@ class Controller:
         """The CONTROL stage's hook: one step of the controller, sense → decide → act."""
         if self.removed:
             return
+        if self.stale is not None:
+            self.stale.materialize(self)
         intent = self.intent
         config = self.config
-        before = self.control_state
-        last = self.last_forces
+        before = self._control_state
+        last = self._last_forces
         sensed = self.senses.sense(
-            world, self.sensed, before, intent, last.push, last.balance_short, config
+            world, self._sensed, before, intent, last.push, last.balance_short, config
         )
         state = decide(sensed, before, intent, config)
         if before.grip is not None or state.grip is not None:
@@ -348,8 +412,13 @@ class Controller:
         if intent.restore_gravity or intent.gravity is not None or intent.nullify is not None:
             switches.switch(world, self.name, intent, before.gravity_wish, before.nullify_wish)
         exert(world, self.body, forces)
-        self.sensed = sensed
-        self.control_state = state
-        self.last_forces = forces
+        self._sensed = sensed
+        self._control_state = state
+        self._last_forces = forces
         changed = state.state is not before.state
-        self.transition = Transition(sensed.time, before.state, state.state) if changed else None
+        self._transition = Transition(sensed.time, before.state, state.state) if changed else None
+
+
+SCALAR_STEP = Controller.step
+"""The step as defined here: while a break patches ``Controller.step``, a crowd runs every
+controller through it."""

@@ -3,8 +3,11 @@ reading and Newton's third law — each a function of what was sensed, held toge
 :class:`Laws` value that a controller owns (``controller.laws``).
 
 Each law returns its force and writes nothing; :func:`~playground.controller.action.act`
-calls them and applies the budgets' verdicts. A different law (a fault of the catalogue, an
-experiment) is a :class:`Laws` with that one function replaced. The model they follow is in
+calls them and applies the budgets' verdicts. Hover, drive, steer and balance are written over
+``ops`` (:mod:`~playground.controller.elementwise`): in floats for one controller (the default),
+in numpy arrays for a crowd (:mod:`~playground.controller.crowd`), the same expressions. A
+different law (a fault of the catalogue, an experiment) is a :class:`Laws` with that one
+function replaced. The model they follow is in
 :class:`~playground.controller.controller.Controller`'s docstring.
 
 >>> Laws().reaction("hover", (0.0, 686.7))
@@ -13,14 +16,14 @@ experiment) is a :class:`Laws` with that one function replaced. The model they f
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
 from playground.controller import ledge
-from playground.controller._vec import ZERO, unit_or
+from playground.controller._vec import unit_or
 from playground.controller.config import ControllerConfig
+from playground.controller.elementwise import FLOATS, Ops
 from playground.controller.ledge import LedgeHold
 from playground.controller.sensing import GroundHit, PushTarget, Sensed, height, up_speed
 from playground.controller.spring import TWO_PI, hover_spring
@@ -48,7 +51,11 @@ Reacting = Literal["hover", "drive", "jump", "push", "climb"]
 
 
 def hover(
-    sensed: Sensed, state: ControllerState, hit: GroundHit, config: ControllerConfig
+    sensed: Sensed,
+    state: ControllerState,
+    hit: GroundHit,
+    config: ControllerConfig,
+    ops: Ops = FLOATS,
 ) -> float:
     """The hover spring along the ground normal, within the legs' budget
     (:meth:`~playground.controller.config.ControllerConfig.hover_budget`): its magnitude, N (the
@@ -71,25 +78,28 @@ def hover(
     gx, gy = sensed.gravity
     ax, ay = hit.frame_acceleration
     m = body.mass
-    weight = m * max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
-    if weight == 0.0 and gx == 0.0 and gy == 0.0:
-        # Weightless (a nullified body) and not pressed on this ground by its frame either:
-        # nothing holds us on it, the legs push with nothing. Otherwise a weightless body
-        # whose held up swings toward whatever it bumps (its inner ear reads the bump as
-        # gravity) finds that body at its flank, a few tenths of a metre away, and the spring
-        # kicks off it at its budget.
-        return 0.0
+    weight = m * ops.max(0.0, -((gx - ax) * nx + (gy - ay) * ny))
     # k = m·(2πf)², c = 2ζ·m·2πf for the mass now (Controller.hover_stiffness and
     # hover_damping_coefficient).
     omega = TWO_PI * config.hover_frequency
     k = m * omega * omega
     c = 2.0 * config.hover_damping * m * omega
     spring = hover_spring(k, c, m, target - h, v_n, sensed.dt, sensed.substeps)
-    return min(config.hover_budget(m), max(0.0, weight + spring))
+    force = ops.min(config.hover_budget(m), ops.max(0.0, weight + spring))
+    # Weightless (a nullified body) and not pressed on this ground by its frame either: nothing
+    # holds us on it, the legs push with nothing. Otherwise a weightless body whose held up
+    # swings toward whatever it bumps (its inner ear reads the bump as gravity) finds that body
+    # at its flank, a few tenths of a metre away, and the spring kicks off it at its budget.
+    return ops.unless((weight == 0.0) & (gx == 0.0) & (gy == 0.0), force)  # type: ignore[no-any-return]
 
 
 def drive(
-    sensed: Sensed, hit: GroundHit, move: float, hover: float, config: ControllerConfig
+    sensed: Sensed,
+    hit: GroundHit,
+    move: float,
+    hover: float,
+    config: ControllerConfig,
+    ops: Ops = FLOATS,
 ) -> Vec:
     """Drive along the ground tangent toward ground velocity + ``move``·max_speed, within
     ``ground_force`` and traction × ``hover`` (the hover's force, N): the force, N (the
@@ -109,14 +119,12 @@ def drive(
     accel = (move * config.max_speed - v_t) / max(config.drive_time, sensed.dt) - (
         (gx - ax) * tx + (gy - ay) * ty
     )
-    budget = min(config.ground_budget(body.mass), config.traction * hover)
-    f = max(-budget, min(budget, body.mass * accel))
-    if f == 0.0:
-        return ZERO
-    return (f * tx, f * ty)
+    budget = ops.min(config.ground_budget(body.mass), config.traction * hover)
+    f = ops.max(-budget, ops.min(budget, body.mass * accel))
+    return ops.vector(f, tx, ty)  # type: ignore[no-any-return]
 
 
-def steer(sensed: Sensed, move: float, config: ControllerConfig) -> Vec:
+def steer(sensed: Sensed, move: float, config: ControllerConfig, ops: Ops = FLOATS) -> Vec:
     """Air steering toward move·max_speed along up's tangent, within ``air_force``: the force,
     N; it never brakes (:data:`~playground.controller._vec.ZERO` then)."""
     ux, uy = sensed.up
@@ -127,14 +135,14 @@ def steer(sensed: Sensed, move: float, config: ControllerConfig) -> Vec:
         * (move * config.max_speed - (body.vx * tx + body.vy * ty))
         / max(config.drive_time, sensed.dt)
     )
-    if f * move <= 0.0:
-        return ZERO
     air = config.air_budget(body.mass)
-    f = max(-air, min(air, f))
-    return (f * tx, f * ty)
+    f = ops.unless(f * move <= 0.0, ops.max(-air, ops.min(air, f)))
+    return ops.vector(f, tx, ty)  # type: ignore[no-any-return]
 
 
-def balance(sensed: Sensed, hit: GroundHit | None, config: ControllerConfig) -> float:
+def balance(
+    sensed: Sensed, hit: GroundHit | None, config: ControllerConfig, ops: Ops = FLOATS
+) -> float:
     """The upright PD torque toward up that the balance needs, N·m (before its budget:
     :func:`~playground.controller.action.act` bounds it by ``balance_torque`` and reports
     when it falls short). It damps the spin relative to ``hit``, the ground stood on (None:
@@ -142,7 +150,7 @@ def balance(sensed: Sensed, hit: GroundHit | None, config: ControllerConfig) -> 
     body = sensed.body
     ux, uy = sensed.up
     ax, ay = -body.sin, body.cos
-    err = math.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
+    err: float = ops.atan2(ax * uy - ay * ux, ax * ux + ay * uy)
     wb = TWO_PI * config.balance_frequency
     # Damp the spin relative to the ground's, so the body turns with a turning floor (inside
     # a spinning ring) instead of lagging behind it.

@@ -304,6 +304,11 @@ class Senses:
             return None
         return ledge.grip(self._body, found, config)
 
+    @property
+    def sweep(self) -> Sweep:
+        """The probe's sweep (this controller's filter): a crowd probes through it."""
+        return self._sweep
+
     def gravity(self, world: World) -> Vec:
         """The gravity at the body, m/s²: ``world.gravity_at`` in general, and for a field
         uniform in space the value the GRAVITY stage has just put in ``space.gravity`` with the

@@ -3,6 +3,11 @@
 A force's :class:`Category` says why it was applied; the solver keeps a sum per category, so that
 the **support force** (engine + the forces that stand in for contacts: hover, drive, grip) and the
 **specific force** (support / m: what an inner ear feels) come out right.
+
+Forces on many bodies at once (a crowd of controllers) enter as one block of rows
+(:class:`ForceRows`), numpy arrays; a row becomes an ordinary entry the moment anything else adds
+to its body, so every body's sum is made of the same float additions in the same order as if
+its row had been added by :meth:`ForceLedger.add_all`.
 """
 
 from __future__ import annotations
@@ -11,12 +16,14 @@ import math
 from collections.abc import Callable
 from enum import Enum
 
+import numpy as np
 import pymunk
+from numpy.typing import NDArray
 
 from playground._engine import raw
 from playground.vec import Vec
 
-__all__ = ["Category", "ForceLedger"]
+__all__ = ["Category", "ForceLedger", "ForceRows"]
 
 
 class Category(Enum):
@@ -48,6 +55,54 @@ class _Entry:
         self.parts = [0.0] * _PARTS
 
 
+class ForceRows:
+    """The forces on a block of bodies, one row each: what :meth:`ForceLedger.add_all` would
+    have summed for each (its forces added to 0.0 in order, no point, then its torque), as
+    arrays. ``bodies`` are distinct and have no entry in the ledger yet when the rows are added.
+
+    Attributes:
+        bodies: the bodies.  ids: their ``body.id``.  force: (k, 2) total force, N.
+        torque: (k,) torque, N·m.  parts: (k, 6) per-category sums ``[px, py, ax, ay, sx, sy]``,
+        N.
+    """
+
+    __slots__ = ("_handles", "active", "bodies", "force", "ids", "index", "parts", "torque")
+
+    def __init__(
+        self,
+        bodies: list[pymunk.Body],
+        ids: NDArray[np.uintp],
+        force: NDArray[np.float64],
+        torque: NDArray[np.float64],
+        parts: NDArray[np.float64],
+        index: dict[pymunk.Body, int] | None = None,
+    ) -> None:
+        self.bodies = bodies
+        self.ids = ids
+        self.force = force
+        self.torque = torque
+        self.parts = parts
+        self.index = index if index is not None else {b: i for i, b in enumerate(bodies)}
+        """Row of each body."""
+        self._handles = [raw.handle(b) for b in bodies]
+        self.active = np.zeros(len(bodies), dtype=bool)
+        """Which rows count as added already: a force added to the body of an active row adds
+        to that row; the body of a row not yet active gets an entry of its own, and the row
+        must be dropped (:meth:`ForceLedger.drop_row`) before the flush."""
+
+    def flush(self, skip: NDArray[np.bool_] | None) -> None:
+        """Write each row's force and torque to its body (rows ``skip`` left out)."""
+        set_force, set_torque = raw.set_force, raw.set_torque
+        fx, fy = self.force[:, 0].tolist(), self.force[:, 1].tolist()
+        torque = self.torque.tolist()
+        handles = self._handles
+        rows = range(len(handles)) if skip is None else np.flatnonzero(~skip).tolist()
+        for i in rows:
+            h = handles[i]
+            set_force(h, fx[i], fy[i])
+            set_torque(h, torque[i])
+
+
 class ForceLedger:
     """Forces we put on bodies during one step, by body and category.
 
@@ -65,7 +120,7 @@ class ForceLedger:
     (Vec2d(3.0, 0.0), -3.0)
     """
 
-    __slots__ = ("_entries", "_on_first", "_spent")
+    __slots__ = ("_entries", "_folded", "_on_first", "_rows", "_spent")
 
     def __init__(self, on_first: Callable[[], None] | None = None) -> None:
         # Keyed by the body object, not its id: ``body.id`` is a call into chipmunk (many times
@@ -76,11 +131,14 @@ class ForceLedger:
         # and a gravity rule put forces on the same bodies every step: no new entry to build).
         self._spent: dict[pymunk.Body, _Entry] = {}
         self._on_first = on_first
+        # A block of rows (add_rows) and which of them became entries since (None: none did).
+        self._rows: ForceRows | None = None
+        self._folded: NDArray[np.bool_] | None = None
 
     def _entry(self, body: pymunk.Body) -> _Entry:
         entry = self._entries.get(body)
         if entry is None:
-            if not self._entries and self._on_first is not None:
+            if not self._entries and self._rows is None and self._on_first is not None:
                 self._on_first()
             entry = self._spent.pop(body, None)
             if entry is None:
@@ -88,8 +146,62 @@ class ForceLedger:
             else:
                 entry.fx = entry.fy = entry.torque = 0.0
                 entry.parts = [0.0] * _PARTS
+            if self._rows is not None:
+                self._fold(body, entry)
             self._entries[body] = entry
         return entry
+
+    def _fold(self, body: pymunk.Body, entry: _Entry) -> None:
+        """Start ``entry`` from ``body``'s row, if it has one: what comes after adds to it."""
+        rows = self._rows
+        assert rows is not None
+        i = rows.index.get(body)
+        if i is None or not rows.active[i]:
+            return
+        if self._folded is None:
+            self._folded = np.zeros(len(rows.bodies), dtype=bool)
+        self._folded[i] = True
+        entry.fx, entry.fy = rows.force[i].tolist()
+        entry.torque = float(rows.torque[i])
+        entry.parts = rows.parts[i].tolist()
+
+    def entry_bodies(self) -> list[pymunk.Body]:
+        """The bodies with an entry (not a row) now."""
+        return list(self._entries)
+
+    def has(self, body: pymunk.Body) -> bool:
+        """Whether ``body`` has an entry (not a row) in this step's ledger."""
+        return body in self._entries
+
+    def add_rows(self, rows: ForceRows) -> None:
+        """Record a block of rows (one block a step; its bodies have no entry yet). The
+        caller has checked that each value is finite."""
+        assert self._rows is None, "one block of rows a step"
+        if not self._entries and self._on_first is not None and len(rows.bodies):
+            self._on_first()
+        self._rows = rows
+        self._folded = None
+
+    def drop_row(self, body: pymunk.Body) -> None:
+        """Leave ``body``'s row out (its forces went in otherwise)."""
+        rows = self._rows
+        i = None if rows is None else rows.index.get(body)
+        if rows is None or i is None:
+            return
+        if self._folded is None:
+            self._folded = np.zeros(len(rows.bodies), dtype=bool)
+        self._folded[i] = True
+
+    def row_block(self) -> tuple[NDArray[np.uintp], NDArray[np.float64]] | None:
+        """The ids and per-category sums ``[px, py, ax, ay, sx, sy]`` (N) of the rows that are
+        still rows (not entries: :meth:`items` has those), or None without rows."""
+        rows = self._rows
+        if rows is None:
+            return None
+        if self._folded is None:
+            return rows.ids, rows.parts
+        keep = ~self._folded
+        return rows.ids[keep], rows.parts[keep]
 
     def add(
         self,
@@ -161,21 +273,39 @@ class ForceLedger:
         for e in self._entries.values():
             set_force(e.h, e.fx, e.fy)
             set_torque(e.h, e.torque)
+        if self._rows is not None:
+            self._rows.flush(self._folded)
 
     def clear(self) -> None:
         """Forget every force (the step is over); the entries wait in ``_spent`` for one step."""
         self._spent = self._entries
         self._entries = {}
+        self._rows = None
+        self._folded = None
 
     def __len__(self) -> int:
-        return len(self._entries)
+        rows = self._rows
+        if rows is None:
+            return len(self._entries)
+        folded = 0 if self._folded is None else int(self._folded.sum())
+        return len(self._entries) + len(rows.bodies) - folded
 
     def parts(self, body: pymunk.Body) -> list[float] | None:
         """``body``'s per-category sums ``[px, py, ax, ay, sx, sy]`` (N), None if it has no
-        forces (what :meth:`items` gives for it, without reading every body's id)."""
+        forces (what :meth:`items` or :meth:`row_block` gives for it, without reading every
+        body's id)."""
         entry = self._entries.get(body)
-        return None if entry is None else entry.parts
+        if entry is not None:
+            return entry.parts
+        rows = self._rows
+        if rows is not None:
+            i = rows.index.get(body)
+            if i is not None:
+                parts: list[float] = rows.parts[i].tolist()
+                return parts
+        return None
 
     def items(self) -> list[tuple[int, list[float]]]:
-        """(body id, per-category sums ``[px, py, ax, ay, sx, sy]``) of every body with forces."""
+        """(body id, per-category sums ``[px, py, ax, ay, sx, sy]``) of every body with an
+        entry (the rows that stayed rows: :meth:`row_block`)."""
         return [(body.id, e.parts) for body, e in self._entries.items()]

@@ -266,6 +266,17 @@ class ForceSolver(TrackedRows):
                 support[i, 1] += p[5]
                 applied[i, 0] -= p[0] + p[4]
                 applied[i, 1] -= p[1] + p[5]
+        block = ledger.row_block()  # a crowd's forces, a row per body
+        if block is not None and len(block[0]):
+            ids, parts = block
+            at = np.array([row_by_id.get(b, -1) for b in ids.tolist()], dtype=np.intp)
+            if (at < 0).any():
+                keep = at >= 0
+                at, parts = at[keep], parts[keep]
+            # The same float operations as the loop above, row by row (each body once).
+            passive[at, 0:2] += parts[:, 0:2]
+            support[at, 0:2] += parts[:, 4:6]
+            applied[at, 0:2] -= parts[:, 0:2] + parts[:, 4:6]
         # (N, 2) and contiguous: the filter downstream is its only consumer. Gathered, then
         # multiplied: half the cost of multiplying the (N, 2) slice of the (N, 3) rows.
         specific = np.take(support.reshape(-1), self._xy_index())

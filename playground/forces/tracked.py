@@ -146,11 +146,28 @@ class TrackedSet:
         do not change it)."""
         self.perceivers: set[int] = set()
         """Ids of the tracked bodies whose perceived gravity is filtered."""
+        self.version = 0
+        """Counts the changes of the rows (a body tracked or untracked): rows looked up at one
+        version hold until the next."""
 
     def row_of(self, body: pymunk.Body, body_id: int | None = None) -> int | None:
         """The row of a tracked body, or None. ``body_id``: its ``body.id`` if the caller has
         it (reading it is a call into Chipmunk)."""
         return self._batch.solver.row_of(body, body_id)
+
+    def perceived_block(
+        self, rows: NDArray[np.intp]
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The held unit up and the filtered perceived gravity (m/s²) of ``rows``, (k, 2) each:
+        the values :meth:`TrackedBodies.perceived_up_and_gravity` gives row by row."""
+        if self.active is self._batch:
+            perceived = self._batch.perceived
+            return perceived.up[rows], perceived.gravity[rows]
+        table = self._scalar.rows
+        picked = [table[i] for i in rows.tolist()]
+        up = np.array([(r.ux, r.uy) for r in picked], dtype=np.float64).reshape(-1, 2)
+        gravity = np.array([(r.gx, r.gy) for r in picked], dtype=np.float64).reshape(-1, 2)
+        return up, gravity
 
     def configure(self, config: Settings) -> None:
         """Take new settings (contact split, sleeping; the rest is read every step)."""
@@ -196,6 +213,7 @@ class TrackedSet:
         self._batch.track(body)
         if perceive:
             self.perceivers.add(body.id)
+        self.version += 1
         self._replan()
 
     def untrack(self, body: pymunk.Body) -> None:
@@ -203,6 +221,7 @@ class TrackedSet:
         self._to_batch()
         self._batch.untrack(body)
         self.perceivers.discard(body.id)
+        self.version += 1
         self._replan()
 
     def refresh_masses(self) -> None:

@@ -27,8 +27,10 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Literal
 
+import numpy as np
 import pymunk
 import pymunk.batch as batch
+from numpy.typing import NDArray
 
 from playground._engine.space import CountingSpace
 from playground.forces.ledger import Category, ForceLedger
@@ -141,6 +143,9 @@ class World:
         )
         self._guard_next = GUARD_EVERY if self._config.guard else _NEVER
         self._state_buffer = batch.Buffer()
+        self.crowd: object = None
+        """The crowd of the world's controllers (``playground.controller.crowd.Crowd``, made by
+        the first controller), which runs them as one when they are many."""
         self.config = self._config
         self.gravity = gravity if gravity is not None else Uniform()
 
@@ -608,6 +613,25 @@ class World:
         controller reads both every step; the row is looked up once)."""
         row = self._tracked_row(body)
         return self._physics.tracked.active.perceived_up_and_gravity(row)
+
+    @property
+    def tracked_version(self) -> int:
+        """Counts the changes of the tracked rows: rows from :meth:`tracked_rows` hold while it
+        stays the same."""
+        return self._physics.tracked.version
+
+    def tracked_rows(self, names: Sequence[str]) -> NDArray[np.intp]:
+        """The tracked rows of the bodies ``names`` (KeyError for one not tracked), for
+        :meth:`perceived_block`."""
+        return np.array([self._tracked_row(n) for n in names], dtype=np.intp)
+
+    def perceived_block(
+        self, rows: NDArray[np.intp]
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """:meth:`perceived_up` and :meth:`perceived_gravity` of many tracked bodies at once, by
+        their :meth:`tracked_rows`: (k, 2) arrays of the same values (a crowd of controllers
+        reads them every step)."""
+        return self._physics.tracked.perceived_block(rows)
 
     def _tracked_row(self, item: str | pymunk.Body) -> int:
         if type(item) is str:

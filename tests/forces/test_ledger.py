@@ -159,3 +159,44 @@ def test_a_cleared_ledger_starts_from_nothing_for_the_same_bodies() -> None:
     assert (body.force, body.torque) == ((0.5, 2.0), 0.25)
     assert ledger.parts(other) is None
     assert calls == [1, 1]
+
+
+def test_a_row_adds_as_add_all_and_a_later_force_adds_to_it() -> None:
+    """Law: a body's row, then a force added to it (once the row is active), sums as add_all of
+    its forces then add of the force; a row not yet active leaves the body to an entry of its
+    own and is dropped; the solver's view (row_block, parts) follows."""
+    import numpy as np
+
+    from playground.forces.ledger import ForceRows
+
+    a, b = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
+    own = [(0.1, 0.7, Category.SUPPORT), (0.2, -0.3, Category.APPLIED)]
+    push = (1e-17, 3.3)
+    reference = ForceLedger()
+    reference.add_all(a, own, 0.25)
+    reference.add(a, push, category=Category.SUPPORT)
+    reference.add(b, push, category=Category.SUPPORT)
+    reference.flush()
+    expected = (tuple(a.force), a.torque, reference.parts(a), tuple(b.force))
+
+    ledger = ForceLedger()
+    fx = 0.0 + 0.1 + 0.2
+    fy = 0.0 + 0.7 + -0.3
+    parts = np.array([[0.0, 0.0, 0.0 + 0.2, 0.0 + -0.3, 0.0 + 0.1, 0.0 + 0.7]] * 2)
+    rows = ForceRows(
+        [a, b],
+        np.array([a.id, b.id], dtype=np.uintp),
+        np.array([[fx, fy], [fx, fy]]),
+        np.array([0.0 + 0.25, 0.0 + 0.25]),
+        parts,
+    )
+    ledger.add_rows(rows)
+    rows.active[0] = True  # a's turn has come, b's not yet
+    ledger.add(a, push, category=Category.SUPPORT)
+    ledger.add(b, push, category=Category.SUPPORT)
+    ledger.drop_row(b)
+    block = ledger.row_block()
+    assert block is not None and len(block[0]) == 0
+    a.force = b.force = (9.0, 9.0)
+    ledger.flush()
+    assert (tuple(a.force), a.torque, ledger.parts(a), tuple(b.force)) == expected

@@ -1,0 +1,694 @@
+"""A crowd: the controllers of one world run as one, their states as arrays, above a measured
+number of actors (:data:`CROWD_MIN_ACTORS`; below it each controller runs its own step).
+
+Each step the crowd reads every member's body in one batch call (:class:`Poses`), their
+perceived gravity as arrays (:meth:`World.perceived_block`) and which bodies touch anything (one
+batch read of the arbiters); each probe is still one C callback (:class:`Sweep`: a query cannot
+be batched). The state machine's two common states and the force laws run on arrays, through
+the very functions one controller uses (:mod:`~playground.controller.laws` over
+:data:`~playground.controller.elementwise.ARRAYS`), and the forces enter the ledger as one block
+of rows (:class:`~playground.forces.ledger.ForceRows`).
+
+A member runs its own scalar step this step (in member order, among the others) unless all of
+these hold: it was GROUNDED or AIRBORNE, holds no grip, is not taking off or rising, has no jump
+pending (its last press older than ``jump_buffer``) and no balance about to be lost; its intent
+is a plain move (no jump, grab, push or gravity switch); it follows the default laws
+(:data:`~playground.controller.controller.DEFAULT_LAWS`: a break patches them) under an
+unpatched ``Controller.step``; its body touches nothing (no arbiter) and its probe finds nothing
+or a static ground that does not turn; and its forces are within the runaway bounds. The whole
+crowd runs scalar while the field is not uniform, bodies may sleep, a step has substeps (a contact
+of an earlier substep counts in the load), or the gravity rules change during the stage (a
+switch of a member that runs scalar comes first).
+
+A batch member's readings (:attr:`Controller.sensed`, ``control_state``, ``last_forces``,
+``transition``) are built from the arrays when first read. They are the values the scalar step
+gives: ``tests/controller/test_crowd.py`` runs random crowds both ways and compares them step by
+step, to the last bit.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import pymunk
+import pymunk.batch as pbatch
+from numpy.typing import NDArray
+
+from playground._engine import raw
+from playground._engine.batch import Poses, touching_ids
+from playground._engine.state import BodyState, body_motion, space_gravity
+from playground.controller import laws as law
+from playground.controller._vec import ZERO, unit_or
+from playground.controller.action import ControllerForces
+from playground.controller.config import ControllerConfig
+from playground.controller.elementwise import ARRAYS
+from playground.controller.sensing import GroundHit, Sensed
+from playground.controller.states import AIRBORNE, GROUNDED, ControllerState, Transition
+from playground.forces.ledger import Category, ForceRows
+from playground.intents import Intent
+from playground.limits import MAX_COORDINATE, RUNAWAY_FORCE
+from playground.world.schedule import Stage
+from playground.world.world import World
+
+if TYPE_CHECKING:
+    from playground.controller.controller import Controller
+
+__all__ = ["CROWD_MIN_ACTORS", "Crowd"]
+
+CROWD_MIN_ACTORS = 24
+"""Fewest controllers a world runs as a crowd: measured with ``python
+benchmarks/crowd_crossover.py`` (the crowd's step against each controller's own, at 1 … 32
+patrolling actors), where the crowd starts to pay."""
+
+SUPPORT = Category.SUPPORT
+APPLIED = Category.APPLIED
+STATIC = pymunk.Body.STATIC
+_CODES = {GROUNDED: 1, AIRBORNE: 2}
+_STATES = (None, GROUNDED, AIRBORNE)
+_RUNAWAY_TORQUE = RUNAWAY_FORCE * MAX_COORDINATE
+
+# The laws and the values they read, called on arrays (typed for floats, written for both).
+_law: Any = law
+_GroundHit: Any = GroundHit
+_Sensed: Any = Sensed
+_BodyState: Any = BodyState
+
+
+def _plain_move(intent: Intent) -> float | None:
+    """The intent's move if it asks for nothing else (no jump, grab, push or switch)."""
+    if (
+        intent.jump
+        or intent.grab
+        or intent.push
+        or intent.gravity is not None
+        or intent.restore_gravity
+        or intent.nullify is not None
+    ):
+        return None
+    return intent.move
+
+
+class _Group:
+    """Members sharing one config (equal configs: one group): their rows."""
+
+    __slots__ = ("config", "cos_slope", "rows")
+
+    def __init__(self, config: ControllerConfig, rows: list[int]) -> None:
+        self.config = config
+        self.rows = np.array(rows, dtype=np.intp)
+        self.cos_slope = math.cos(config.max_slope)
+
+
+class Crowd:
+    """The controllers of one world (:meth:`of`), run as one above :attr:`min_actors`."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+        self.members: list[Controller] = []
+        self.min_actors = CROWD_MIN_ACTORS
+        """Fewest members run as a crowd (0: always; a change applies when one joins or
+        leaves, or at once through :meth:`set_min_actors`)."""
+        self.active = False
+        """Whether the crowd's hook runs the members (else each runs its own)."""
+        self._poses = Poses()
+        self._arbiters = pbatch.Buffer()
+        self._plain: dict[int, tuple[Intent, float | None]] = {}
+        self._configs: list[ControllerConfig] = []
+        self._groups: list[_Group] = []
+        self._rows_version = -1
+        self._rows = np.zeros(0, dtype=np.intp)
+        self._gravity_key: tuple[int, float, float] | None = None
+        self._g: tuple[Any, ...] = ()
+        self._resize()
+
+    @classmethod
+    def of(cls, world: World) -> Crowd:
+        """The crowd of ``world`` (made on first use)."""
+        # Kept by the world (World.crowd), not in a table of worlds: a table would keep every
+        # world alive through its members.
+        crowd = world.crowd
+        if not isinstance(crowd, Crowd):
+            crowd = cls(world)
+            world.crowd = crowd
+        return crowd
+
+    # -- membership ------------------------------------------------------------------------------
+
+    def join(self, controller: Controller) -> None:
+        """Add a controller (it has registered its own CONTROL hook)."""
+        self.members.append(controller)
+        self._resize()
+        if self.active:
+            self.world.off(Stage.CONTROL, controller.step)
+        self._replan()
+
+    def leave(self, controller: Controller) -> bool:
+        """Take a controller out (it is being removed); whether the crowd was running its
+        CONTROL step (then its own hook is not registered)."""
+        owned = self.active
+        self._fresh()
+        self.members.remove(controller)
+        self._resize()
+        self._replan()
+        return owned
+
+    def set_min_actors(self, most: int) -> None:
+        """Set :attr:`min_actors` and apply it now."""
+        self.min_actors = most
+        self._replan()
+
+    def _replan(self) -> None:
+        want = len(self.members) >= self.min_actors and len(self.members) > 0
+        if want == self.active:
+            return
+        world = self.world
+        if want:
+            for c in self.members:
+                world.off(Stage.CONTROL, c.step)
+            world.on(Stage.CONTROL, self.step)
+        else:
+            world.off(Stage.CONTROL, self.step)
+            for c in self.members:
+                if c.stale is self:
+                    self.materialize(c)
+                world.on(Stage.CONTROL, c.step)
+        self.active = want
+
+    def _fresh(self) -> None:
+        """Every member's readings built from the arrays (before the arrays change shape)."""
+        for c in self.members:
+            if c.stale is self:
+                self.materialize(c)
+
+    def _resize(self) -> None:
+        """Arrays for the members, filled from each one's objects (their readings built first
+        from the arrays they outgrow)."""
+        if hasattr(self, "_views"):
+            self._fresh()
+        n = len(self.members)
+        self._ids = np.array([c.body.id for c in self.members], dtype=np.uintp)
+        self._handles = [raw.handle(c.body) for c in self.members]
+        self._member_of = {c.body: i for i, c in enumerate(self.members)}
+        self._code = np.zeros(n, dtype=np.int8)
+        self._names = [c.name for c in self.members]
+        z = np.zeros
+        self.cur: dict[str, Any] = {
+            k: z(n)
+            for k in (
+                "ux",
+                "uy",
+                "push_x",
+                "push_y",
+                "short",
+                "saturated",
+                "grounded_at",
+                "pressed_at",
+                "still",
+                "getup_at",
+                "getup_from",
+            )
+        }
+        # Each member's last ground: a GroundHit, or the view of the batch step it stood on.
+        self._last_ground: list[Any] = [None] * n
+        self._views: list[Any] = [None] * n
+        self._rows_version = -1
+        self._configs = []
+        self._absorb_all()
+
+    def _absorb_all(self) -> None:
+        for i in range(len(self.members)):
+            self._absorb(i)
+
+    def _absorb(self, i: int) -> None:
+        """Copy member ``i``'s state (after a scalar step, or as built) into the arrays."""
+        c = self.members[i]
+        state = c.control_state
+        sensed = c.sensed
+        forces = c.last_forces
+        ok = (
+            state.grip is None
+            and not state.rising
+            and state.take_off_from is None
+            and sensed.ground_motion is None
+            and state.ledge is None
+        )
+        self._code[i] = _CODES.get(state.state, 0) if ok else 0
+        cur = self.cur
+        cur["ux"][i], cur["uy"][i] = sensed.up
+        cur["push_x"][i], cur["push_y"][i] = forces.push
+        short = forces.balance_short
+        cur["short"][i] = -1.0 if short is None else float(short)
+        cur["saturated"][i] = state.saturated
+        cur["grounded_at"][i] = state.grounded_at
+        cur["pressed_at"][i] = state.jump_pressed_at
+        cur["still"][i] = state.still
+        cur["getup_at"][i] = state.getup_at
+        cur["getup_from"][i] = state.getup_from
+        self._last_ground[i] = state.last_ground
+        self._views[i] = None
+
+    # -- the step --------------------------------------------------------------------------------
+
+    def _batch_allowed(self, world: World) -> bool:
+        return (
+            self.members[0].unpatched()
+            and world.gravity.uniform
+            and not math.isfinite(world.config.sleep_time)
+            and world.config.substeps == 1
+        )
+
+    def step(self, world: World) -> None:
+        """The CONTROL stage's hook of an active crowd."""
+        members = self.members
+        if not members:
+            return
+        if not self._batch_allowed(world):
+            for i, c in enumerate(members):
+                c.step(world)
+                self._absorb(i)
+            return
+        n = len(members)
+        t = world.time
+        wc = world.config
+        dt = wc.dt
+        # -- who may go batch: intents, laws, states ---------------------------------------------
+        default_laws = members[0].default_laws
+        plain = self._plain
+        moves: list[float] = []
+        for c in members:
+            intent = c.intent
+            cached = plain.get(id(intent))
+            if cached is None or cached[0] is not intent:
+                cached = (intent, _plain_move(intent))
+                plain[id(intent)] = cached
+            m = cached[1]
+            # NaN marks a member that runs scalar (a move is within [-1, 1]).
+            moves.append(math.nan if m is None or c.laws is not default_laws or c.removed else m)
+        move = np.array(moves)
+        ok = (self._code > 0) & ~np.isnan(move)
+        move[~ok] = 0.0
+        self._regroup()
+        cur = self.cur
+        for g in self._groups:
+            cfg = g.config
+            r = g.rows
+            pending = t - cur["pressed_at"][r] <= cfg.jump_buffer
+            losing = (cur["short"][r] == 1.0) & (cur["saturated"][r] + dt > cfg.balance_loss_time)
+            ok[r] &= ~(pending | losing)
+        # -- sensing ---------------------------------------------------------------------------
+        poses = self._poses.read(world.space, self._ids)
+        x, y, angle, vx, vy, spin = poses.T
+        cos, sin = np.cos(angle), np.sin(angle)
+        gx, gy, gux, guy, has_g = self._gravity(world)
+        ux, uy = cur["ux"].copy(), cur["uy"].copy()
+        grounded_before = self._code == 1
+        # Airborne: up against the field (the last up where there is none).
+        ux = np.where(has_g, gux, ux)
+        uy = np.where(has_g, guy, uy)
+        pux = puy = None
+        if grounded_before.any():
+            pu, pg = world.perceived_block(self._tracked_rows(world))
+            pux, puy = pu[:, 0], pu[:, 1]
+            finite = np.isfinite(pux) & np.isfinite(puy)
+            weak = self._below(pg, wc.perception.up_threshold)
+            held_x = np.where(weak, cur["ux"], pux)
+            held_y = np.where(weak, cur["uy"], puy)
+            ux = np.where(grounded_before, np.where(finite, held_x, ux), ux)
+            uy = np.where(grounded_before, np.where(finite, held_y, uy), uy)
+        touched = touching_ids(world.space, self._arbiters)
+        if len(touched):
+            ok &= ~np.isin(self._ids, touched)
+        # Each probe, one C callback (a query is not batched).
+        ground: list[pymunk.Body | None] = [None] * n
+        motions: dict[pymunk.Shape, tuple[pymunk.Body | None, int, float, float, float]] = {}
+        xs, ys, uxs, uys = x.tolist(), y.tolist(), ux.tolist(), uy.tolist()
+        probes = self._probes
+        at: list[int] = []
+        found_rows: list[tuple[float, float, float, float, float, float, float]] = []
+        for i in np.flatnonzero(ok).tolist():
+            nearest, length, radius = probes[i]
+            px, py, qx, qy = xs[i], ys[i], uxs[i], uys[i]
+            found = nearest(px, py, px - qx * length, py - qy * length, radius)
+            if found is None:
+                continue
+            shape, fhx, fhy, fnx, fny = found
+            seen = motions.get(shape)
+            if seen is None:
+                b = shape.body
+                seen = motions[shape] = (
+                    (b, *body_motion(b)) if b is not None else (None, 0, 0, 0, 0)
+                )
+            b, kind, bvx, bvy, w = seen
+            if b is None:
+                continue
+            if kind != STATIC or w != 0.0:
+                ok[i] = False
+                continue
+            ground[i] = b
+            at.append(i)
+            found_rows.append((fhx, fhy, fnx, fny, bvx, bvy, w))
+        hit = np.zeros(n, dtype=bool)
+        cols = np.zeros((7, n))
+        if at:
+            hit[at] = True
+            cols[:, at] = np.array(found_rows, dtype=np.float64).T
+        hx, hy, nx, ny, gvx, gvy, gw = cols
+        # -- the scalar members first get their readings from the arrays of the last step -------
+        for i in np.flatnonzero(~ok).tolist():
+            c = members[i]
+            if c.stale is self:
+                self.materialize(c)
+        # -- deciding and acting, on arrays, per config -------------------------------------------
+        handles = self._handles
+        mass = np.array(list(map(raw.mass, handles)))
+        moment = np.array(list(map(raw.moment, handles)))
+        body = _BodyState(x, y, vx, vy, cos, sin, spin, mass, moment)
+        zeros = np.zeros(n)
+        frame_v = (gvx + zeros, gvy + zeros)
+        hits = _GroundHit(
+            None,
+            (hx, hy),
+            (nx, ny),
+            (x - hx) * ux + (y - hy) * uy,
+            False,
+            frame_v,
+            (zeros, zeros),
+            (zeros, zeros),
+            gw,
+            False,
+        )
+        sensed = _Sensed(body, (ux, uy), t, dt, wc.substeps, (gx, gy))
+        nxt = self._act(sensed, hits, hit, move, ok, t, dt)
+        nxt["code_before"] = self._code.copy()
+        nxt["short_before"] = cur["short"].copy()
+        nxt["ground"] = ground
+        nxt["hits"] = (hx, hy, nx, ny, gvx, gvy, gw, hits.distance, nxt["walkable"])
+        nxt["sensed"] = (body, t, dt, wc.substeps, gx, gy, pux, puy, grounded_before)
+        # -- the forces: a row per batch member, each taking effect at its member's turn -------
+        ledger = world.ledger
+        rows = np.flatnonzero(ok)
+        rows.flags.writeable = False
+        block: ForceRows | None = None
+        if len(rows):
+            block = ForceRows(
+                [members[i].body for i in rows.tolist()],
+                self._ids[rows],
+                np.stack([nxt["fx"][rows], nxt["fy"][rows]], axis=1),
+                nxt["torque"][rows],
+                nxt["parts"][rows],
+            )
+            ledger.add_rows(block)
+        # -- the walk, in member order: each scalar member's step runs where it stands; the batch
+        # members' rows take effect in the stretch before it (its push on one of them then adds to
+        # that row, as in member order); a force already on a batch member's body (an earlier hook
+        # or scalar member) comes first, its own forces after it.
+        version = world.gravity_version
+        ok_list = ok.tolist()
+        scalar = [i for i, good in enumerate(ok_list) if not good]
+        member_of = self._member_of
+        start = 0
+        for stop in [*scalar, n]:
+            if block is not None:
+                for b in ledger.entry_bodies():
+                    j = member_of.get(b)
+                    if j is not None and start <= j < stop and ok_list[j]:
+                        ledger.drop_row(b)
+                        ledger.add_all(b, _own(nxt, j), _torque(nxt, j, members[j].config))
+                lo, hi = np.searchsorted(rows, (start, stop))
+                block.active[lo:hi] = True
+            if stop == n:
+                break
+            members[stop].step(world)
+            self._absorb(stop)
+            start = stop + 1
+            if world.gravity_version != version:
+                # A switch just now: every member after it senses again, in floats.
+                for j in range(start, n):
+                    c = members[j]
+                    if ok_list[j]:
+                        ok[j] = ok_list[j] = False
+                        ledger.drop_row(c.body)
+                        if c.stale is self:
+                            self.materialize(c)
+                    c.step(world)
+                    self._absorb(j)
+                break
+        # -- commit the batch members' state ----------------------------------------------------
+        done = np.flatnonzero(ok)
+        for k in ("ux", "uy", "short", "saturated", "grounded_at"):
+            cur[k][done] = nxt[k][done]
+        cur["push_x"][done] = 0.0
+        cur["push_y"][done] = 0.0
+        self._code[done] = nxt["code"][done]
+        on_ground = nxt["on_ground"].tolist()
+        views, last_ground = self._views, self._last_ground
+        for i in done.tolist():
+            members[i].stale = self
+            views[i] = nxt
+            if on_ground[i]:
+                last_ground[i] = nxt  # this step's hit, built when read
+
+    def _regroup(self) -> None:
+        configs = [c.config for c in self.members]
+        old = self._configs
+        if len(old) == len(configs) and all(a is b for a, b in zip(old, configs, strict=True)):
+            return
+        self._configs = configs
+        self._probes = [
+            (c.senses.sweep.nearest, c.config.probe_length, c.config.probe_radius)
+            for c in self.members
+        ]
+        by: dict[ControllerConfig, list[int]] = {}
+        for i, cfg in enumerate(configs):
+            by.setdefault(cfg, []).append(i)
+        self._groups = [_Group(cfg, rows) for cfg, rows in by.items()]
+
+    def _tracked_rows(self, world: World) -> NDArray[np.intp]:
+        if world.tracked_version != self._rows_version:
+            self._rows = world.tracked_rows(self._names)
+            self._rows_version = world.tracked_version
+        return self._rows
+
+    def _gravity(self, world: World) -> tuple[Any, Any, Any, Any, Any]:
+        """Each member's gravity (its rule on the uniform field), the unit up against it, and
+        whether it has any: read again only when the field or a rule changed."""
+        g = space_gravity(world.space)
+        key = (world.gravity_version, g[0], g[1])
+        if key != self._gravity_key or len(self._g[0]) != len(self.members):
+            gs = [world.gravity_rule(c.name).apply(g[0], g[1]) for c in self.members]
+            ups = [unit_or(-a, -b, (math.nan, math.nan)) for a, b in gs]
+            self._g = (
+                np.array([a for a, _ in gs]),
+                np.array([b for _, b in gs]),
+                np.array([u for u, _ in ups]),
+                np.array([v for _, v in ups]),
+                np.array([not math.isnan(u) for u, _ in ups]),
+            )
+            self._gravity_key = key
+        return self._g
+
+    @staticmethod
+    def _below(pg: NDArray[np.float64], threshold: float) -> NDArray[np.bool_]:
+        """``math.hypot(gx, gy) < threshold`` row by row, to the last bit: the sum of squares
+        decides all but the rows within 1e-12 of the threshold, which ``math.hypot`` does."""
+        s = pg[:, 0] * pg[:, 0] + pg[:, 1] * pg[:, 1]
+        lo, hi = (threshold * (1.0 - 1e-12)) ** 2, (threshold * (1.0 + 1e-12)) ** 2
+        below = s < lo
+        near = ~below & ~(s > hi) & np.isfinite(s)
+        for i in np.flatnonzero(near).tolist():
+            below[i] = math.hypot(pg[i, 0], pg[i, 1]) < threshold
+        return below
+
+    def _act(
+        self,
+        sensed: Sensed,
+        hits: GroundHit,
+        hit: NDArray[np.bool_],
+        move: NDArray[np.float64],
+        ok: NDArray[np.bool_],
+        t: float,
+        dt: float,
+    ) -> dict[str, Any]:
+        """decide and act of the batch members, per config group; ``ok`` loses a member whose
+        forces are beyond the runaway bounds."""
+        n = len(move)
+        cur = self.cur
+        nx, ny = hits.normal
+        out: dict[str, Any] = {
+            k: np.zeros(n)
+            for k in (
+                "fx",
+                "fy",
+                "torque",
+                "hover_x",
+                "hover_y",
+                "drive_x",
+                "drive_y",
+                "balance",
+                "short",
+                "saturated",
+                "grounded_at",
+            )
+        }
+        out["parts"] = np.zeros((n, 6))
+        out["code"] = np.zeros(n, dtype=np.int8)
+        out["on_ground"] = np.zeros(n, dtype=bool)
+        out["walkable"] = np.zeros(n, dtype=bool)
+        out["hover_on"] = np.zeros(n, dtype=bool)
+        out["drive_on"] = np.zeros(n, dtype=bool)
+        out["steer_on"] = np.zeros(n, dtype=bool)
+        out["locked"] = np.zeros(n, dtype=bool)
+        ux, uy = sensed.up
+        out["ux"], out["uy"] = ux, uy
+        out["load"] = np.maximum(0.0, -(cur["push_x"] * ux + cur["push_y"] * uy)) + 0.0
+        state = ControllerState(GROUNDED)
+        for g in self._groups:
+            cfg = g.config
+            r = g.rows
+            walkable = (nx * ux + ny * uy >= g.cos_slope) & hit
+            on_ground = walkable  # not rising: a batch member never is
+            short = cur["short"]
+            saturated = np.where(short == 1.0, cur["saturated"] + dt, 0.0)
+            saturated = np.where(short < 0.0, cur["saturated"], saturated)
+            grounded = on_ground
+            out["code"][r] = np.where(grounded, 1, 2)[r]
+            out["grounded_at"][r] = np.where(grounded, t, cur["grounded_at"])[r]
+            out["saturated"][r] = saturated[r]
+            out["on_ground"][r] = on_ground[r]
+            out["walkable"][r] = walkable[r]
+            hover = _law.hover(sensed, state, hits, cfg, ARRAYS)
+            hover = np.where(grounded, hover, 0.0)
+            hvx, hvy = hover * nx, hover * ny
+            dvx, dvy = _law.drive(sensed, hits, move, hover, cfg, ARRAYS)
+            svx, svy = _law.steer(sensed, move, cfg, ARRAYS)
+            hover_on = grounded & (hover > 0.0)
+            # ops.vector's zero: f = 0 (a unit direction has a component of at least 0.7).
+            drive_on = grounded & ((dvx != 0.0) | (dvy != 0.0))
+            steer_on = ~grounded & (move != 0.0) & ((svx != 0.0) | (svy != 0.0))
+            # The same additions as add_all: 0.0, then each force in order.
+            sx = 0.0 + np.where(hover_on, hvx, 0.0) + np.where(drive_on, dvx, 0.0)
+            sy = 0.0 + np.where(hover_on, hvy, 0.0) + np.where(drive_on, dvy, 0.0)
+            ax = 0.0 + np.where(steer_on, svx, 0.0)
+            ay = 0.0 + np.where(steer_on, svy, 0.0)
+            fx = 0.0 + np.where(hover_on, hvx, 0.0) + np.where(drive_on, dvx, 0.0)
+            fx = fx + np.where(steer_on, svx, 0.0)
+            fy = 0.0 + np.where(hover_on, hvy, 0.0) + np.where(drive_on, dvy, 0.0)
+            fy = fy + np.where(steer_on, svy, 0.0)
+            if cfg.lock_rotation:
+                torque = np.zeros(n)
+                out["short"][r] = -1.0
+                out["locked"][r] = True
+            else:
+                # Relative to the ground's spin (0 off the ground: the same subtraction).
+                need = _law.balance(sensed, hits, cfg, ARRAYS)
+                budget = cfg.balance_budget(sensed.body.mass)
+                torque = ARRAYS.max(-budget, ARRAYS.min(budget, need))
+                touching = grounded  # nothing else touches a batch member
+                out["short"][r] = np.where((np.abs(need) > budget) & touching, 1.0, 0.0)[r]
+            out["balance"][r] = torque[r]
+            out["torque"][r] = (0.0 + torque)[r]
+            out["fx"][r], out["fy"][r] = fx[r], fy[r]
+            out["parts"][r, 2], out["parts"][r, 3] = ax[r], ay[r]
+            out["parts"][r, 4], out["parts"][r, 5] = sx[r], sy[r]
+            out["hover_x"][r], out["hover_y"][r] = (
+                np.where(grounded, hvx, 0.0)[r],
+                np.where(grounded, hvy, 0.0)[r],
+            )
+            dx = np.where(grounded, dvx, np.where(move != 0.0, svx, 0.0))
+            dy = np.where(grounded, dvy, np.where(move != 0.0, svy, 0.0))
+            out["drive_x"][r], out["drive_y"][r] = dx[r], dy[r]
+            out["hover_on"][r] = hover_on[r]
+            out["drive_on"][r] = (drive_on | steer_on)[r]
+            out["steer_on"][r] = steer_on[r]
+        cap = RUNAWAY_FORCE if self.world.config.guard else math.inf
+        t_cap = _RUNAWAY_TORQUE if self.world.config.guard else math.inf
+        within = (
+            (np.abs(out["fx"]) <= cap)
+            & (np.abs(out["fy"]) <= cap)
+            & (np.abs(out["torque"]) <= t_cap)
+            & np.isfinite(out["parts"]).all(axis=1)
+        )
+        ok &= within
+        return out
+
+    # -- readings built when read ----------------------------------------------------------------
+
+    def materialize(self, c: Controller) -> None:
+        """Build ``c``'s readings of its last batch step from the arrays (then it is fresh)."""
+        i = self._member_of[c.body]
+        nxt = self._views[i]
+        c.stale = None
+        if nxt is None:
+            return
+        body, t, dt, substeps, gx, gy, pux, puy, grounded_before = nxt["sensed"]
+        state_body = BodyState(
+            float(body.x[i]), float(body.y[i]), float(body.vx[i]), float(body.vy[i]),
+            float(body.cos[i]), float(body.sin[i]), float(body.spin[i]), float(body.mass[i]),
+            float(body.moment[i]),
+        )  # fmt: skip
+        up = (float(nxt["ux"][i]), float(nxt["uy"][i]))
+        hit = _hit_of(nxt, i)
+        perceived = (
+            (float(pux[i]), float(puy[i])) if grounded_before[i] and pux is not None else None
+        )
+        short_before = float(nxt["short_before"][i])
+        last_short = None if short_before < 0.0 else short_before == 1.0
+        c.sensed = Sensed(
+            state_body, up, t, dt, substeps, (float(gx[i]), float(gy[i])), perceived, hit,
+            None, 0.0, float(nxt["load"][i]), False, last_short, 0.0, 0.0, None, ZERO, None,
+        )  # fmt: skip
+        code = int(nxt["code"][i])
+        new_state = _STATES[code]
+        old_state = _STATES[int(nxt["code_before"][i])]
+        assert new_state is not None and old_state is not None
+        last = self._last_ground[i]
+        if isinstance(last, dict):
+            last = hit if last is nxt else _hit_of(last, i)
+            self._last_ground[i] = last
+        before = c.control_state  # its unchanging fields are as they were
+        c.control_state = ControllerState(
+            new_state, False, before.jump_pressed_at, float(nxt["grounded_at"][i]), False,
+            last, float(nxt["saturated"][i]), before.still, 0.0, before.getup_at,
+            before.getup_from, None, None, None, None,
+        )  # fmt: skip
+        grounded = code == 1
+        hover = (float(nxt["hover_x"][i]), float(nxt["hover_y"][i])) if grounded else ZERO
+        own = _own(nxt, i)
+        drive = (float(nxt["drive_x"][i]), float(nxt["drive_y"][i])) if nxt["drive_on"][i] else ZERO
+        locked = bool(nxt["locked"][i])
+        torque = None if locked else float(nxt["balance"][i])
+        c.last_forces = ControllerForces(
+            hover, drive, ZERO, ZERO, 0.0 if torque is None else torque, own, torque, None, [],
+            None, None, None, None if locked else bool(nxt["short"][i] == 1.0),
+        )  # fmt: skip
+        changed = new_state is not old_state
+        c.transition = Transition(t, old_state, new_state) if changed else None
+
+
+def _hit_of(view: dict[str, Any], i: int) -> GroundHit | None:
+    """Member ``i``'s ground in the step of ``view`` (None: none found)."""
+    ground_body = view["ground"][i]
+    if ground_body is None:
+        return None
+    hx, hy, nx, ny, gvx, gvy, gw, dist, walkable = view["hits"]
+    return GroundHit(
+        ground_body, (float(hx[i]), float(hy[i])), (float(nx[i]), float(ny[i])),
+        float(dist[i]), bool(walkable[i]), (float(gvx[i]), float(gvy[i])), (0.0, 0.0),
+        (0.0, 0.0), float(gw[i]), False,
+    )  # fmt: skip
+
+
+def _own(nxt: dict[str, Any], i: int) -> list[tuple[float, float, Category]]:
+    own: list[tuple[float, float, Category]] = []
+    if nxt["hover_on"][i]:
+        own.append((float(nxt["hover_x"][i]), float(nxt["hover_y"][i]), SUPPORT))
+    if nxt["drive_on"][i]:
+        kind = APPLIED if nxt["steer_on"][i] else SUPPORT
+        own.append((float(nxt["drive_x"][i]), float(nxt["drive_y"][i]), kind))
+    return own
+
+
+def _torque(nxt: dict[str, Any], i: int, config: ControllerConfig) -> float | None:
+    return None if config.lock_rotation else float(nxt["balance"][i])

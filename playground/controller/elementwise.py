@@ -1,0 +1,82 @@
+"""The few operations the force laws need beyond + − × ÷, for plain floats (:data:`FLOATS`) and
+for numpy arrays of many controllers at once (:data:`ARRAYS`), with the same results bit for bit:
+a law written over ``ops`` serves one controller in floats and a crowd in arrays.
+
+``ARRAYS.max(a, b)`` is Python's ``max(a, b)`` elementwise — ``a`` unless ``b > a`` — not
+``np.maximum``, which gives −0.0 for ``max(0.0, −0.0)``; ``np.arctan2`` gives the bits of
+``math.atan2`` (``tests/controller/test_elementwise.py`` checks both).
+
+>>> FLOATS.max(0.0, -0.0), FLOATS.unless(True, 3.0), FLOATS.vector(0.0, 0.6, 0.8)
+(0.0, 0.0, (0.0, 0.0))
+>>> import numpy as np
+>>> ARRAYS.max(np.array([0.0, 1.0]), np.array([-0.0, 2.0])).tolist()
+[0.0, 2.0]
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from playground.controller._vec import ZERO
+
+__all__ = ["ARRAYS", "FLOATS", "Ops"]
+
+
+class Ops:
+    """Elementwise operations on floats (the base class) or arrays (:class:`_ArrayOps`)."""
+
+    __slots__ = ()
+
+    max: Any = staticmethod(max)
+    """``a`` unless ``b > a`` (Python's ``max(a, b)``)."""
+    min: Any = staticmethod(min)
+    """``a`` unless ``b < a`` (Python's ``min(a, b)``)."""
+    atan2: Any = staticmethod(math.atan2)
+    """The angle of (x, y), rad."""
+
+    @staticmethod
+    def unless(cond: Any, x: Any) -> Any:
+        """0.0 where ``cond``, else ``x``."""
+        return 0.0 if cond else x
+
+    @staticmethod
+    def vector(f: Any, tx: Any, ty: Any) -> Any:
+        """The force ``f`` along (tx, ty): :data:`~playground.controller._vec.ZERO` itself where
+        ``f`` is 0 (the laws' "no force")."""
+        if f == 0.0:
+            return ZERO
+        return (f * tx, f * ty)
+
+
+def _max(a: Any, b: Any) -> Any:
+    return np.where(b > a, b, a)
+
+
+def _min(a: Any, b: Any) -> Any:
+    return np.where(b < a, b, a)
+
+
+class _ArrayOps(Ops):
+    __slots__ = ()
+
+    max = staticmethod(_max)
+    min = staticmethod(_min)
+    atan2 = staticmethod(np.arctan2)
+
+    @staticmethod
+    def unless(cond: Any, x: Any) -> Any:
+        return np.where(cond, 0.0, x)
+
+    @staticmethod
+    def vector(f: Any, tx: Any, ty: Any) -> Any:
+        zero = f == 0.0
+        return (np.where(zero, 0.0, f * tx), np.where(zero, 0.0, f * ty))
+
+
+FLOATS = Ops()
+"""The operations on plain floats: one controller."""
+ARRAYS: Ops = _ArrayOps()
+"""The operations on numpy arrays, one element per controller: a crowd."""

@@ -1,0 +1,198 @@
+"""The crowd (:mod:`playground.controller.crowd`) against the scalar path: random crowds run
+both ways, step by step, give the same bodies and the same readings to the last bit (the same
+float operations in the same order: the laws are the same functions over
+:data:`~playground.controller.elementwise.ARRAYS`, the ledger's rows the same additions); the
+batch path does run (the oracle is not vacuous); a break that patches the laws sends every
+member down the scalar path, so the fault catalogue still sees its break."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from playground import faults
+from playground.controller.config import ControllerConfig
+from playground.controller.controller import Controller
+from playground.controller.crowd import Crowd
+from playground.gravity import GravityRule
+from playground.intents import Intent, Patrol, Script
+from playground.level import find, load
+from playground.scene import build
+from playground.world.world import World
+
+STEPS = 150
+"""Steps each random crowd runs both ways (1.25 s: settling, walking, a push, a nullify)."""
+
+JOIN = 60
+"""The step at which a controller joins the random crowd and another leaves it."""
+
+ALWAYS = 0
+NEVER = 10**9
+_NULL = GravityRule(scale=0.0)
+"""Gravity nullified (an event of the random crowd)."""
+
+
+def _crowd(spec: dict[str, Any], batch: bool) -> tuple[World, list[Controller]]:
+    world = World()
+    world.add_static_segment((-60.0, 0.0), (60.0, 0.0))
+    world.add_box("crate", mass=spec["crate_mass"], size=(1.0, 1.0), position=(0.0, 0.5))
+    Crowd.of(world).set_min_actors(ALWAYS if batch else NEVER)
+    actors = []
+    for i, a in enumerate(spec["actors"]):
+        config = ControllerConfig(mass=a["mass"]) if a["own_config"] else None
+        if a["script"]:
+            timeline = (
+                (0.0, Intent(move=a["move"])),
+                (a["at"], Intent(move=a["move"], push=a["push"], jump=a["jump"])),
+                (a["at"] + 0.3, Intent(move=-a["move"])),
+            )
+            source: Any = Script(timeline)
+        else:
+            source = Patrol(speed=a["speed"], period=a["period"])
+        actors.append(
+            Controller(
+                world,
+                f"a{i}",
+                position=(a["x"], a["y"]),
+                config=config,
+                source=source,
+                angle=a["angle"],
+            )
+        )
+    if spec["nullify"] is not None:
+        # Not a0: it leaves the crowd at JOIN.
+        name = f"a{1 + spec['nullify'] % (len(actors) - 1)}"
+        world.at(spec["nullify_at"], lambda w: w.set_gravity_rule(name, _NULL))
+    return world, actors
+
+
+def _readings(world: World, actors: list[Controller]) -> list[Any]:
+    out: list[Any] = []
+    for name in world.names:
+        b = world.body(name)
+        out.append((name, tuple(b.position), tuple(b.velocity), b.angle, b.angular_velocity))
+    for c in actors:
+        f = c.last_forces
+        s = c.sensed
+        out.append(
+            (
+                c.name, c.state, c.transition, f.hover, f.drive, f.push, f.balance_torque,
+                f.torque, f.balance_short, f.own, s.up, s.perceived_up, s.gravity, s.load,
+                s.ground.point if s.ground else None, s.ground.distance if s.ground else None,
+                c.control_state.grounded_at, c.control_state.saturated,
+                world.forces(c.name).support,
+            )
+        )  # fmt: skip
+    return out
+
+
+actor = st.fixed_dictionaries(
+    {
+        "x": st.floats(-50.0, 50.0),
+        "y": st.floats(0.85, 2.5),
+        "angle": st.floats(-0.4, 0.4),
+        "mass": st.floats(20.0, 200.0),
+        "own_config": st.booleans(),
+        "script": st.booleans(),
+        "move": st.floats(-1.0, 1.0),
+        "at": st.floats(0.1, 1.0),
+        "push": st.booleans(),
+        "jump": st.booleans(),
+        "speed": st.floats(0.0, 1.0),
+        "period": st.floats(0.3, 3.0),
+    }
+)
+crowds = st.fixed_dictionaries(
+    {
+        "actors": st.lists(actor, min_size=2, max_size=10),
+        "crate_mass": st.floats(5.0, 500.0),
+        "nullify": st.none() | st.integers(0, 9),
+        "nullify_at": st.floats(0.1, 1.0),
+    }
+)
+
+
+@settings(max_examples=20, deadline=None)
+@given(crowds)
+def test_a_random_crowd_runs_as_one_as_it_runs_one_by_one(spec: dict[str, Any]) -> None:
+    """Law: bodies, readings and force solver readings equal (as floats) at every step."""
+    scalar, sa = _crowd(spec, batch=False)
+    batch, sb = _crowd(spec, batch=True)
+    for step in range(STEPS):
+        if step == JOIN:
+            # One joins and one leaves a running crowd (its arrays change shape).
+            for world, actors in ((scalar, sa), (batch, sb)):
+                actors.append(Controller(world, "late", position=(55.0, 0.95)))
+                actors.pop(0).remove()
+        scalar.step()
+        batch.step()
+        assert _readings(batch, sb) == _readings(scalar, sa), f"step {step}"
+
+
+def test_the_batch_path_runs_most_of_a_patrolling_crowd() -> None:
+    """The oracle above compares something: on a floor of patrolling enemies, the crowd runs
+    nearly every member-step in batch (all but the first steps, before it lands)."""
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (80.0, 0.0))
+    actors = [
+        Controller(world, f"e{i}", position=(2.0 * i, 0.95), source=Patrol(0.5, 2.0 + 0.01 * i))
+        for i in range(30)
+    ]
+    assert Crowd.of(world).active
+    batched = 0
+    for _ in range(120):
+        world.step()
+        batched += sum(c.stale is not None for c in actors)
+    assert batched >= 0.95 * 120 * len(actors)
+
+
+def test_the_crowd_level_runs_as_it_would_one_by_one() -> None:
+    """The shipped ``crowd`` level (a nullify, a push, a crate) gives the same bodies both ways."""
+
+    def scene(most: int) -> Any:
+        s = build(load(find("crowd")))
+        Crowd.of(s.world).set_min_actors(most)
+        return s
+
+    a, b = scene(NEVER), scene(ALWAYS)
+    for step in range(150):
+        a.world.step()
+        b.world.step()
+        for name in a.world.names:
+            pa, pb = a.world.body(name), b.world.body(name)
+            assert (tuple(pa.position), tuple(pa.velocity), pa.angle) == (
+                tuple(pb.position), tuple(pb.velocity), pb.angle,
+            ), (step, name)  # fmt: skip
+
+
+def test_a_break_of_the_laws_sends_every_member_down_the_scalar_path() -> None:
+    """With ``hover_removed`` open, controllers follow a patched hover: none runs in batch."""
+    with faults.apply("hover_removed"):
+        world = World()
+        world.add_static_segment((-5.0, 0.0), (80.0, 0.0))
+        actors = [Controller(world, f"e{i}", position=(2.0 * i, 0.95)) for i in range(30)]
+        for _ in range(10):
+            world.step()
+    assert Crowd.of(world).active
+    assert not any(c.stale is not None for c in actors)
+    assert all(c.last_forces.hover == (0.0, 0.0) for c in actors)
+
+
+def test_a_world_with_a_crowd_is_freed_when_dropped() -> None:
+    """The crowd lives on its world (``World.crowd``), not in a table of worlds that its
+    members, which hold their world, would keep alive forever."""
+    import gc
+    import weakref
+
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (80.0, 0.0))
+    for i in range(30):
+        Controller(world, f"e{i}", position=(2.0 * i, 0.95))
+    world.step()
+    assert Crowd.of(world).active
+    ref = weakref.ref(world)
+    del world
+    gc.collect()
+    assert ref() is None

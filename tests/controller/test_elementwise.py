@@ -1,0 +1,58 @@
+"""The laws' elementwise operations (:mod:`playground.controller.elementwise`): on arrays they
+give, element by element, the bits the float operations give — signed zeros included, where
+``np.maximum`` would not, and NaN where a float gives NaN."""
+
+from __future__ import annotations
+
+import math
+import struct
+
+import numpy as np
+from hypothesis import given
+from hypothesis import strategies as st
+
+from playground.controller._vec import ZERO
+from playground.controller.elementwise import ARRAYS, FLOATS
+
+SPECIAL = [0.0, -0.0, 1.0, -1.0, math.inf, -math.inf, math.nan, 5e-324, -5e-324]
+values = st.one_of(st.sampled_from(SPECIAL), st.floats(allow_nan=True, allow_infinity=True))
+
+
+def bits(x: float) -> bytes:
+    """The float's bits; every NaN one value (a NaN's payload is no physics: numpy's atan2 may
+    carry another one than libm's through a NaN argument)."""
+    return b"nan" if math.isnan(x) else struct.pack("<d", x)
+
+
+@given(st.lists(st.tuples(values, values), min_size=1, max_size=50))
+def test_max_min_atan2_are_the_float_ones_bit_for_bit(pairs: list[tuple[float, float]]) -> None:
+    """Law: ARRAYS.max/min/atan2 on arrays = FLOATS' on each pair, to the bit."""
+    a = np.array([p for p, _ in pairs])
+    b = np.array([q for _, q in pairs])
+    for name in ("max", "min", "atan2"):
+        got = getattr(ARRAYS, name)(a, b).tolist()
+        want = [getattr(FLOATS, name)(p, q) for p, q in pairs]
+        assert [bits(x) for x in got] == [bits(x) for x in want], name
+
+
+def test_np_maximum_would_not_do() -> None:
+    """Why ARRAYS.max is not np.maximum: max(0.0, −0.0) is 0.0, np.maximum gives −0.0."""
+    assert bits(max(0.0, -0.0)) == bits(0.0)
+    assert bits(float(np.maximum(0.0, -0.0))) == bits(-0.0)
+    assert bits(float(ARRAYS.max(np.array([0.0]), np.array([-0.0]))[0])) == bits(0.0)
+
+
+@given(st.lists(st.tuples(values, st.booleans()), min_size=1, max_size=50))
+def test_unless_and_vector_are_the_float_ones(rows: list[tuple[float, bool]]) -> None:
+    """Law: ARRAYS.unless/vector = FLOATS' row by row (ZERO where the force is 0)."""
+    f = np.array([x for x, _ in rows])
+    cond = np.array([c for _, c in rows])
+    got = ARRAYS.unless(cond, f).tolist()
+    assert [bits(x) for x in got] == [bits(FLOATS.unless(c, x)) for x, c in rows]
+    vx, vy = ARRAYS.vector(f, 0.6, -0.8)
+    for k, (x, _) in enumerate(rows):
+        want = FLOATS.vector(x, 0.6, -0.8)
+        if want is ZERO:
+            assert (vx[k], vy[k]) == (0.0, 0.0)
+        else:
+            assert [bits(v) for v in (vx[k], vy[k])] == [bits(v) for v in want]
