@@ -27,6 +27,7 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import pymunk
@@ -35,7 +36,7 @@ from pymunk._chipmunk_cffi import lib
 from playground._engine.query import NearestQuery, from_handle, is_sensor, shape_data
 from playground._engine.raw import c_callback
 
-__all__ = ["Hit", "Sweep", "nearest_by_pymunk"]
+__all__ = ["Hit", "Sweep", "nearest_by_pymunk", "nearest_where"]
 
 Hit = tuple[pymunk.Shape, float, float, float, float]
 """The shape hit, the hit point (m) and the surface normal there (unit)."""
@@ -96,3 +97,28 @@ class Sweep(NearestQuery):
             return None
         best[1] = None
         return (from_handle(shape_data(shape)), best[2], best[3], best[4], best[5])
+
+
+def nearest_where(
+    space: pymunk.Space,
+    start: tuple[float, float],
+    end: tuple[float, float],
+    radius: float,
+    shape_filter: pymunk.ShapeFilter,
+    keep: Callable[[pymunk.Shape], bool],
+) -> Hit | None:
+    """:func:`nearest_by_pymunk` among the shapes ``keep`` accepts: the slow path of a probe
+    that must pass over a shape (a one-way platform seen from below), taken only then."""
+    info: pymunk.SegmentQueryInfo | None = None
+    for h in space.segment_query(start, end, radius, shape_filter):
+        shape = h.shape
+        if (
+            shape is not None
+            and not shape.sensor
+            and (info is None or h.alpha < info.alpha)
+            and keep(shape)
+        ):
+            info = h
+    if info is None or info.shape is None:
+        return None
+    return (info.shape, info.point.x, info.point.y, info.normal.x, info.normal.y)

@@ -53,7 +53,9 @@ def decide(
     if intent.jump and not state.jump_held:
         jump_pressed_at = t
     rising = state.rising
-    if rising and (hit is None or up_speed(sensed, hit) <= 0.0):
+    if rising and up_speed(sensed, hit) <= 0.0:
+        # Relative to the ground, or to the world out of its reach: a jump up through a
+        # one-way platform is still rising when the platform comes into reach.
         rising = False
 
     saturated = state.saturated

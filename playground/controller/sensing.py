@@ -22,7 +22,7 @@ from playground._engine.state import (
     centre_of_gravity,
     space_gravity,
 )
-from playground._engine.sweep import Sweep
+from playground._engine.sweep import Sweep, nearest_where
 from playground.controller import grab, ledge
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.config import ControllerConfig
@@ -39,6 +39,7 @@ from playground.controller.states import (
 )
 from playground.intents import Intent
 from playground.vec import Vec
+from playground.world import one_way
 from playground.world.world import World
 
 # Body types read once (``pymunk.Body.X`` is two attribute lookups, three times a step).
@@ -341,7 +342,14 @@ class Senses:
         length = config.probe_length
         # The nearest of every hit (playground._engine.sweep says why not pymunk's
         # segment_query_first).
-        found = self._sweep.nearest(px, py, px - ux * length, py - uy * length, config.probe_radius)
+        end, radius = (px - ux * length, py - uy * length), config.probe_radius
+        found = self._sweep.nearest(px, py, end[0], end[1], radius)
+        if found is not None and one_way.passes(found[0], px, py, radius):
+            # A one-way platform seen from below or from inside: look past it.
+            found = nearest_where(
+                self._space, (px, py), end, radius, self._filter,
+                lambda shape: not one_way.passes(shape, px, py, radius),
+            )  # fmt: skip
         ground = found[0].body if found is not None else None
         if found is None or ground is None:
             return None, None

@@ -92,7 +92,8 @@ class ControllerState:
         jump_held: the jump intent was held last step (a press is its rising edge).
         jump_pressed_at: when the jump was last pressed and not yet used (−∞: none).
         grounded_at: when the controller last stood on walkable ground (−∞: it jumped since).
-        rising: taking off, until it stops rising relative to the ground or loses it.
+        rising: taking off, until it stops rising relative to the ground (to the world out of
+            its reach: a jump up through a one-way platform does not stand on it rising).
         last_ground: the walkable ground it last stood on (a coyote jump pushes off it).
         saturated: how long the balance has needed more than its budget while touching.
         still: how long it has lain still while off balance.

@@ -39,6 +39,7 @@ from playground.gravity import GravityRule
 from playground.gravity import perception as perception_mod
 from playground.vec import Vec
 from playground.world import gravity_stage
+from playground.world import one_way as one_way_mod
 from playground.world import world as world_mod
 
 HOVER_REACTION_SCALE = 0.05
@@ -228,6 +229,31 @@ def _ledge_held_in_world() -> Iterator[None]:
         return grip
 
     with replaced(ledge_mod, "grip", make):
+        yield
+
+
+@register("one_way_solid")
+def _one_way_solid() -> Iterator[None]:
+    """One-way shapes are solid from every side: a player jumping up under a platform hits its
+    head on it."""
+
+    def make(original: Callable[..., None]) -> Callable[..., None]:
+        parameter(original, one_way_mod, "arbiter")
+
+        def begin(arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+            arbiter.process_collision = True
+
+        return begin
+
+    with replaced(one_way_mod, "_begin", make):
+        yield
+
+
+@register("one_way_probe_below")
+def _one_way_probe_below() -> Iterator[None]:
+    """The ground probe takes a one-way shape for ground from below and from inside it: a jump
+    that leaves the centre inside a platform is held up there by its hover."""
+    with replaced(one_way_mod, "passes", lambda _: lambda *a, **k: False):
         yield
 
 

@@ -12,6 +12,11 @@ from playground.level.values import Finite, NonNegative, Positive, Table, Vec, W
 class _Surface(Table):
     friction: NonNegative = Field(default=0.8, description="Coulomb friction coefficient.")
     elasticity: float = Field(default=0.0, ge=0.0, le=1.0, description="Restitution, 0..1.")
+    one_way: bool = Field(
+        default=False,
+        description="Solid only from its top, the +y side of its body's frame (world +y for "
+        "geometry): bodies pass up through it and land on it (playground.world.one_way).",
+    )
 
 
 class Segment(_Surface):

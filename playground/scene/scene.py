@@ -41,6 +41,7 @@ from playground.level.timeline import (
 )
 from playground.scene.feasibility import derived_problems, physical_problems
 from playground.vec import Vec
+from playground.world import one_way
 from playground.world.config import WorldConfig
 from playground.world.world import World
 
@@ -117,6 +118,7 @@ def _build(level: Level, where: str) -> Scene:
     settings = to_core(level.settings)
     config = dataclasses.replace(settings, perception=to_core(level.tracking.perception))
     world = World(config, gravity=to_core(level.gravity))
+    one_way.install(world.space)
     scene = Scene(level, world)
     static = world.space.static_body
     for shape in level.geometry:
@@ -188,6 +190,8 @@ def _shapes(body: pymunk.Body, model: Shape) -> list[pymunk.Shape]:
     for shape in out:
         shape.friction = model.friction
         shape.elasticity = model.elasticity
+        if model.one_way:
+            shape.collision_type = one_way.ONE_WAY
     return out
 
 
@@ -201,6 +205,8 @@ def _ring(body: pymunk.Body, model: Ring) -> list[pymunk.Shape]:
     )
     for seg in segments:
         seg.elasticity = model.elasticity
+        if model.one_way:
+            seg.collision_type = one_way.ONE_WAY
     return list(segments)
 
 

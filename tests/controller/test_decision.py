@@ -261,3 +261,13 @@ def test_a_bouncing_crate_crushes_a_light_player_once() -> None:
         for name, c in scene.controllers.items():
             changes[name] += c.state is not before[name] and scene.world.time > 0.1
     assert changes == {name: 1 for name in scene.controllers}
+
+
+def test_a_take_off_rises_until_it_stops_rising_out_of_the_grounds_reach() -> None:
+    """Rising, with no ground in reach the take-off lasts while it moves up relative to the
+    world (a platform it jumps up through is not stood on on the way up), and ends at the top."""
+    rising = dataclasses.replace(GROUNDED, state=State.AIRBORNE, rising=True)
+    up = dataclasses.replace(airborne(), body=dataclasses.replace(airborne().body, vy=2.0))
+    assert decide(up, rising, Intent(), CONFIG).rising
+    down = dataclasses.replace(airborne(), body=dataclasses.replace(airborne().body, vy=-0.1))
+    assert not decide(down, rising, Intent(), CONFIG).rising

@@ -164,3 +164,22 @@ def test_the_sensed_gravity_follows_every_change_of_the_field_and_the_rule() -> 
         world.step()
         assert player.senses.gravity(world) == world.gravity_at("p")
     assert len(versions) == len(changes) + 1
+
+
+def test_the_probe_looks_past_a_one_way_platform_it_starts_inside() -> None:
+    """Standing on the floor with its centre inside a one-way platform, the probe finds the
+    floor, not the platform; standing on the platform, it finds the platform."""
+    from playground.world import one_way
+
+    world = World()
+    floor = world.add_static_segment((-5.0, 0.0), (5.0, 0.0))
+    low = pymunk.Poly(world.space.static_body, [(-1.0, 0.8), (1.0, 0.8), (1.0, 1.3), (-1.0, 1.3)])
+    one_way.make_one_way(world.space, low)
+    world.space.add(low)
+    player = Controller(world, "player", (0.0, 1.0))
+    world.run(0.5)
+    assert player.state is State.GROUNDED and player.probe is not None
+    assert player.probe.point[1] == pytest.approx(floor.radius)
+    on_top = Controller(world, "on_top", (0.6, 1.3 + ControllerConfig().ride_height))
+    world.run(0.5)
+    assert on_top.probe is not None and on_top.probe.point[1] == pytest.approx(1.3)
