@@ -28,7 +28,21 @@ import playground
 ROOT = Path(__file__).resolve().parent.parent
 BUILD_INPUTS = ("pyproject.toml", "README.md", "LICENSE", "playground", "levels")
 """What the build backend reads: everything else in a checkout stays out of the wheel."""
-SHIPPED_LEVELS = 17
+
+
+def _readme_levels() -> int:
+    """The rows of the README's table of levels (``| `name` | ...``, after its header)."""
+    lines = (Path(__file__).parent.parent / "README.md").read_text(encoding="utf-8").splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("| level | what it shows"))
+    rows = 0
+    for line in lines[start + 2 :]:
+        if not line.startswith("| `"):
+            break
+        rows += 1
+    return rows
+
+
+SHIPPED_LEVELS = _readme_levels()
 """The README's table of levels."""
 
 
