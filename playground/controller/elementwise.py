@@ -3,8 +3,9 @@ for numpy arrays of many controllers at once (:data:`ARRAYS`), with the same res
 a law written over ``ops`` serves one controller in floats and a crowd in arrays.
 
 ``ARRAYS.max(a, b)`` is Python's ``max(a, b)`` elementwise — ``a`` unless ``b > a`` — not
-``np.maximum``, which gives −0.0 for ``max(0.0, −0.0)``; ``np.arctan2`` gives the bits of
-``math.atan2`` (``tests/controller/test_elementwise.py`` checks both).
+``np.maximum``, which gives −0.0 for ``max(0.0, −0.0)``; ``ARRAYS.atan2`` is ``math.atan2``
+element by element, not ``np.arctan2``, whose SIMD loop on a CPU with AVX-512 differs from libm
+in the last bit (``tests/controller/test_elementwise.py`` checks both).
 
 >>> FLOATS.max(0.0, -0.0), FLOATS.unless(True, 3.0), FLOATS.vector(0.0, 0.6, 0.8)
 (0.0, 0.0, (0.0, 0.0))
@@ -59,12 +60,21 @@ def _min(a: Any, b: Any) -> Any:
     return np.where(b < a, b, a)
 
 
+def _atan2(y: Any, x: Any) -> Any:
+    # libm's atan2 on each pair: numpy 2.4's float64 arctan2 on AVX-512 (its SIMD loop) gives
+    # another last bit for about one pair in thirteen of [-1, 1]², and a crowd's balance torque
+    # would then differ from the same controller's alone.
+    yb, xb = np.broadcast_arrays(y, x)
+    flat = map(math.atan2, yb.ravel().tolist(), xb.ravel().tolist())
+    return np.array(list(flat), dtype=np.float64).reshape(yb.shape)
+
+
 class _ArrayOps(Ops):
     __slots__ = ()
 
     max = staticmethod(_max)
     min = staticmethod(_min)
-    atan2 = staticmethod(np.arctan2)
+    atan2 = staticmethod(_atan2)
 
     @staticmethod
     def unless(cond: Any, x: Any) -> Any:
