@@ -11,6 +11,10 @@ compares them bit for bit). ``segment_query_first`` is not an answer: with a rad
 7.3.1's can return a farther shape (inside a 64-segment ring it reports a neighbouring chord's
 end cap, normal 40° off, while the chord under the probe is 7 cm nearer).
 
+:func:`nearest_each` runs many probes of one space (each with its own filter, a crowd's) in one
+call: the same query and callback per probe, without a Python call of the probe's own between
+them.
+
 Like :mod:`playground._engine.raw` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
 major version is pinned). Where the platform refuses a cffi callback (memory both writable and
 executable), :class:`Sweep` answers through :func:`nearest_by_pymunk` instead.
@@ -27,16 +31,16 @@ True
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import pymunk
-from pymunk._chipmunk_cffi import lib
+from pymunk._chipmunk_cffi import ffi, lib
 
 from playground._engine.query import NearestQuery, from_handle, is_sensor, shape_data
 from playground._engine.raw import c_callback
 
-__all__ = ["Hit", "Sweep", "nearest_by_pymunk", "nearest_where"]
+__all__ = ["Hit", "Sweep", "nearest_by_pymunk", "nearest_each", "nearest_where"]
 
 Hit = tuple[pymunk.Shape, float, float, float, float]
 """The shape hit, the hit point (m) and the surface normal there (unit)."""
@@ -97,6 +101,54 @@ class Sweep(NearestQuery):
             return None
         best[1] = None
         return (from_handle(shape_data(shape)), best[2], best[3], best[4], best[5])
+
+
+def nearest_each(
+    probes: Sequence[Sweep],
+    x0: Sequence[float],
+    y0: Sequence[float],
+    x1: Sequence[float],
+    y1: Sequence[float],
+    radius: Sequence[float],
+) -> list[Hit | None]:
+    """``probes[i].nearest(x0[i], y0[i], x1[i], y1[i], radius[i])`` for each probe (m), in one
+    call: the same answers, bit for bit (the same query and callback).
+
+    >>> space = pymunk.Space()
+    >>> floor = pymunk.Segment(space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.0)
+    >>> space.add(floor)
+    >>> probe = Sweep(space, pymunk.ShapeFilter())
+    >>> down, up = (0.0, 1.0, 0.0, -1.0, 0.25), (1.0, 1.0, 1.0, 2.0, 0.25)  # m
+    >>> hits = nearest_each([probe, probe], *zip(down, up))
+    >>> hits[0] == probe.nearest(*down), hits[1]
+    (True, None)
+    """
+    if _callback is None or not probes:
+        return [
+            p.nearest(a, b, c, d, r)
+            for p, a, b, c, d, r in zip(probes, x0, y0, x1, y1, radius, strict=True)
+        ]
+    best: list[Any] = [math.inf, None, 0.0, 0.0, 0.0, 0.0]
+    data = ffi.new_handle(best)
+    query, callback = _query, _callback
+    # The Shape of each cpShape* hit, looked up once a call (a crowd's probes mostly hit one
+    # floor); not kept across calls: a freed shape's memory may hold another shape later.
+    shapes: dict[Any, pymunk.Shape] = {}
+    out: list[Hit | None] = []
+    append = out.append
+    for p, a, b, c, d, r in zip(probes, x0, y0, x1, y1, radius, strict=True):
+        best[0] = math.inf
+        query(p._space_c, (a, b), (c, d), r, p._filter_c[0], callback, data)
+        shape_c = best[1]
+        if shape_c is None:
+            append(None)
+            continue
+        best[1] = None
+        shape = shapes.get(shape_c)
+        if shape is None:
+            shape = shapes[shape_c] = from_handle(shape_data(shape_c))
+        append((shape, best[2], best[3], best[4], best[5]))
+    return out
 
 
 def nearest_where(

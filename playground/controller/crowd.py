@@ -39,6 +39,7 @@ from numpy.typing import NDArray
 from playground._engine import raw
 from playground._engine.batch import Poses, touching_ids
 from playground._engine.state import BodyState, body_motion, space_gravity
+from playground._engine.sweep import nearest_each
 from playground.controller import laws as law
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.action import ControllerForces
@@ -320,17 +321,25 @@ class Crowd:
         touched = touching_ids(world.space, self._arbiters)
         if len(touched):
             ok &= ~np.isin(self._ids, touched)
-        # Each probe, one C callback (a query is not batched).
+        # Each probe is one C query with its Python callback (a query is not batched), all of
+        # them in one call.
         ground: list[pymunk.Body | None] = [None] * n
         motions: dict[pymunk.Shape, tuple[pymunk.Body | None, int, float, float, float]] = {}
-        xs, ys, uxs, uys = x.tolist(), y.tolist(), ux.tolist(), uy.tolist()
-        probes = self._probes
+        probing = np.flatnonzero(ok)
+        ends_x = x - ux * self._probe_length
+        ends_y = y - uy * self._probe_length
+        sweeps = self._sweeps
+        found_at = nearest_each(
+            sweeps if len(probing) == n else [sweeps[i] for i in probing.tolist()],
+            x[probing].tolist(),
+            y[probing].tolist(),
+            ends_x[probing].tolist(),
+            ends_y[probing].tolist(),
+            self._probe_radius[probing].tolist(),
+        )
         at: list[int] = []
         found_rows: list[tuple[float, float, float, float, float, float, float]] = []
-        for i in np.flatnonzero(ok).tolist():
-            nearest, length, radius = probes[i]
-            px, py, qx, qy = xs[i], ys[i], uxs[i], uys[i]
-            found = nearest(px, py, px - qx * length, py - qy * length, radius)
+        for i, found in zip(probing.tolist(), found_at, strict=True):
             if found is None:
                 continue
             shape, fhx, fhy, fnx, fny = found
@@ -456,10 +465,9 @@ class Crowd:
         if len(old) == len(configs) and all(a is b for a, b in zip(old, configs, strict=True)):
             return
         self._configs = configs
-        self._probes = [
-            (c.senses.sweep.nearest, c.config.probe_length, c.config.probe_radius)
-            for c in self.members
-        ]
+        self._sweeps = [c.senses.sweep for c in self.members]
+        self._probe_length = np.array([cfg.probe_length for cfg in configs])
+        self._probe_radius = np.array([cfg.probe_radius for cfg in configs])
         by: dict[ControllerConfig, list[int]] = {}
         for i, cfg in enumerate(configs):
             by.setdefault(cfg, []).append(i)

@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from playground._engine import sweep
-from playground._engine.sweep import Sweep, nearest_by_pymunk
+from playground._engine.sweep import Sweep, nearest_by_pymunk, nearest_each
 
 RING_SEGMENTS = 64
 """A ring of chords, where pymunk's segment_query_first picks a farther chord's end cap."""
@@ -81,6 +81,26 @@ def test_the_sweep_answers_as_pymunks_query(
     assert _bits(fast) == _bits(nearest_by_pymunk(space, (x0, y0), (x1, y1), radius, shape_filter))
 
 
+_PROBE = st.tuples(_COORD, _COORD, _COORD, _COORD, st.sampled_from((0.0, 0.05, 0.25)))
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.integers(0, 50), st.lists(_PROBE, max_size=12), st.data())
+def test_many_probes_in_one_call_answer_as_each_alone(
+    seed: int, probes: list[tuple[float, float, float, float, float]], data: st.DataObject
+) -> None:
+    """Law: nearest_each = each probe's own nearest = pymunk's query, bit for bit, whatever
+    filter each probe has (its own group, or none)."""
+    space, own = _scene(seed)
+    filters = [data.draw(st.sampled_from((own, pymunk.ShapeFilter()))) for _ in probes]
+    sweeps = [Sweep(space, f) for f in filters]
+    x0, y0, x1, y1, radius = (list(c) for c in zip(*probes, strict=True)) if probes else ([],) * 5
+    hits = nearest_each(sweeps, x0, y0, x1, y1, radius)
+    assert len(hits) == len(probes)
+    for hit, f, (a, b, c, d, r) in zip(hits, filters, probes, strict=True):
+        assert _bits(hit) == _bits(nearest_by_pymunk(space, (a, b), (c, d), r, f))
+
+
 def test_of_equally_near_shapes_the_first_wins_and_sensors_are_passed() -> None:
     space = pymunk.Space()
     first = pymunk.Segment(space.static_body, (-1.0, 0.0), (1.0, 0.0), 0.0)
@@ -116,3 +136,5 @@ def test_without_cffi_callbacks_the_sweep_asks_pymunk(monkeypatch: pytest.Monkey
     fast = probe.nearest(0.0, 3.0, 0.0, 3.6, 0.25)
     monkeypatch.setattr(sweep, "_callback", None)
     assert fast is not None and _bits(probe.nearest(0.0, 3.0, 0.0, 3.6, 0.25)) == _bits(fast)
+    (many,) = nearest_each([probe], [0.0], [3.0], [0.0], [3.6], [0.25])
+    assert _bits(many) == _bits(fast)
