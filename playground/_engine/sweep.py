@@ -40,7 +40,15 @@ from pymunk._chipmunk_cffi import ffi, lib
 from playground._engine.query import NearestQuery, from_handle, is_sensor, shape_data
 from playground._engine.raw import c_callback
 
-__all__ = ["Hit", "Sweep", "nearest_by_pymunk", "nearest_each", "nearest_where"]
+__all__ = [
+    "Hit",
+    "Sweep",
+    "face_normal",
+    "nearest_by_pymunk",
+    "nearest_each",
+    "nearest_where",
+    "sharp",
+]
 
 Hit = tuple[pymunk.Shape, float, float, float, float]
 """The shape hit, the hit point (m) and the surface normal there (unit)."""
@@ -174,3 +182,35 @@ def nearest_where(
     if info is None or info.shape is None:
         return None
     return (info.shape, info.point.x, info.point.y, info.normal.x, info.normal.y)
+
+
+def sharp(shape: pymunk.Shape) -> bool:
+    """The shape has sharp corners (a polygon or a segment of radius 0), where a swept circle's
+    normal is the direction from the corner to the circle, not a face's normal.
+
+    >>> sharp(pymunk.Poly.create_box(None, (1.0, 1.0))), sharp(pymunk.Circle(None, 1.0))
+    (True, False)
+    """
+    if isinstance(shape, pymunk.Poly):
+        return shape.radius == 0.0
+    return isinstance(shape, pymunk.Segment) and shape.radius == 0.0
+
+
+def face_normal(
+    shape: pymunk.Shape, x: float, y: float, dx: float, dy: float
+) -> tuple[float, float] | None:
+    """The normal (unit) of the face of ``shape`` that a ray from (x, y) along (dx, dy) (m)
+    meets first, or None if it meets none (pymunk's ``Shape.segment_query``, radius 0).
+
+    >>> space = pymunk.Space()
+    >>> box = pymunk.Poly.create_box(space.static_body, (1.0, 1.0))    # m: from -0.5 to 0.5
+    >>> space.add(box)
+    >>> face_normal(box, 0.5, 1.0, 0.0, -1.0)       # down onto its top face at the corner
+    (0.0, 1.0)
+    >>> face_normal(box, 2.0, 1.0, 0.0, -1.0) is None
+    True
+    """
+    info = shape.segment_query((x, y), (x + dx, y + dy), 0.0)
+    if info is None:
+        return None
+    return (info.normal.x, info.normal.y)

@@ -51,6 +51,15 @@ class Controller:
     The model, each step, all along the controller's ``up``:
 
     - **probe**: a circle swept from the centre along −up (``probe_length``) finds the ground.
+    - **stairs** (:mod:`~playground.controller.stairs`): the probe's reading of a sharp corner
+      is the face past it, not the slant from the corner to the circle; walking, the body
+      looks ``radius + speed/(2·hover_frequency)`` ahead (its cap plus the way it goes in half
+      the hover's period) for a tread parallel to its ground, above its clearance and at most
+      the step's reach ``ride_height − half_length`` above its feet — the height of its lower
+      cap's centre, above which a riser meets its straight side, a wall — and takes it for the
+      ground, so the hover lifts it over the riser before the cap meets it; grounded and
+      coming down, a tread up to that reach past ``probe_length`` keeps it grounded (the
+      hover only pushes: it falls onto the tread as it would, without turning AIRBORNE).
     - **hover**: a damped spring on the height over the hit point and on the velocity relative to
       the ground point, ``F = m·g_n + k·(ride − h) − c·v_rel`` with ``k = m(2πf)²``,
       ``c = 2ζm·2πf`` (m the body's mass now), and the weight felt in the ground's frame (gravity

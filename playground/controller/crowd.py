@@ -15,7 +15,9 @@ pending (its last press older than ``jump_buffer``) and no balance about to be l
 is a plain move (no jump, grab, push or gravity switch); it follows the default laws
 (:data:`~playground.controller.controller.DEFAULT_LAWS`: a break patches them) under an
 unpatched ``Controller.step``; its body touches nothing (no arbiter) and its probe finds nothing
-or a static ground that does not turn; and its forces are within the runaway bounds. The whole
+(while airborne) or a static ground that does not turn, where :mod:`~playground.controller.stairs`
+changes nothing (no corner's face, no tread ahead); and its forces are within the runaway
+bounds. The whole
 crowd runs scalar while the field is not uniform, bodies may sleep, a step has substeps (a contact
 of an earlier substep counts in the load), or the gravity rules change during the stage (a
 switch of a member that runs scalar comes first).
@@ -41,6 +43,7 @@ from playground._engine.batch import Poses, touching_ids
 from playground._engine.state import BodyState, body_motion, space_gravity
 from playground._engine.sweep import nearest_each
 from playground.controller import laws as law
+from playground.controller import stairs
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.action import ControllerForces
 from playground.controller.config import ControllerConfig
@@ -337,10 +340,16 @@ class Crowd:
             ends_y[probing].tolist(),
             self._probe_radius[probing].tolist(),
         )
+        xs, ys, uxs, uys = x.tolist(), y.tolist(), ux.tolist(), uy.tolist()
+        vxs, vys, held, moving = vx.tolist(), vy.tolist(), grounded_before.tolist(), move.tolist()
+        configs = self._configs
         at: list[int] = []
         found_rows: list[tuple[float, float, float, float, float, float, float]] = []
         for i, found in zip(probing.tolist(), found_at, strict=True):
             if found is None:
+                # Grounded, its own step looks for a tread to step down to (stairs.below).
+                if held[i]:
+                    ok[i] = False
                 continue
             shape, fhx, fhy, fnx, fny = found
             seen = motions.get(shape)
@@ -353,6 +362,22 @@ class Crowd:
             if b is None:
                 continue
             if kind != STATIC or w != 0.0:
+                ok[i] = False
+                continue
+            # On stairs its own step's probe reads another ground: a corner's face, a tread to
+            # step down to (grounded over unwalkable ground), a tread ahead to step up onto.
+            m = moving[i]
+            px, py, qx, qy = xs[i], ys[i], uxs[i], uys[i]
+            cfg, sweep, radius = configs[i], sweeps[i], configs[i].probe_radius
+            if (
+                stairs.face(found, px, py, qx, qy, radius) is not found
+                or (held[i] and not stairs.walkable(found, qx, qy, cfg))
+                or (
+                    m != 0.0
+                    and stairs.step_up(sweep, found, px, py, vxs[i], vys[i], qx, qy, m, cfg)
+                    is not None
+                )
+            ):
                 ok[i] = False
                 continue
             ground[i] = b

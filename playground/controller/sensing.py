@@ -23,7 +23,7 @@ from playground._engine.state import (
     space_gravity,
 )
 from playground._engine.sweep import Sweep, nearest_where
-from playground.controller import grab, ledge
+from playground.controller import grab, ledge, stairs
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.config import ControllerConfig
 from playground.controller.grab import Grip
@@ -268,7 +268,16 @@ class Senses:
             if s is GETTING_UP:
                 perceived_up = world.perceived_up(name)
 
-        ground, motion = self.probe(body, ux, uy, wc.dt, before.ground_motion, config)
+        # Grounded and pulled toward the ground, it steps down to a tread below the probe's
+        # length along the field (stairs.below); not while jumping (rising), nor falling away
+        # from the ground (a gravity flip: the field along its up).
+        down: Vec | None = None
+        if s is GROUNDED and not state.rising and gx * ux + gy * uy < 0.0:
+            g = math.hypot(gx, gy)
+            down = (gx / g, gy / g)
+        ground, motion = self.probe(
+            body, ux, uy, wc.dt, before.ground_motion, config, intent.move, down
+        )
         # Each contact's impulse summed over the step's substeps, over the step: its mean.
         contact_load, touching = self._contacts.load_and_touching(ux, uy, wc.dt)
         load = contact_load + max(0.0, -(last_push[0] * ux + last_push[1] * uy))
@@ -334,10 +343,19 @@ class Senses:
         dt: float,
         last_motion: GroundMotion | None,
         config: ControllerConfig,
+        move: float = 0.0,
+        down: Vec | None = None,
     ) -> tuple[GroundHit | None, GroundMotion | None]:
         """Sweep a circle from the centre along −up; the nearest other shape is the ground.
         Returns it and, if kinematic, its motion for the next step's probe (``last_motion``:
-        the last step's; dt the step, s)."""
+        the last step's; dt the step, s).
+
+        On stairs (:mod:`~playground.controller.stairs`): a corner's hit stands for the face
+        past it; moving (``move`` ≠ 0), a tread ahead within the step's reach is the ground
+        (the hover lifts the body onto it before its cap meets the riser); stepping ``down``
+        (grounded the step before and coming down: the field's direction, unit) where the probe
+        finds no walkable ground, a tread up to the step's reach past the probe's length along
+        it is the ground."""
         px, py = body.x, body.y
         length = config.probe_length
         # The nearest of every hit (playground._engine.sweep says why not pymunk's
@@ -350,9 +368,21 @@ class Senses:
                 self._space, (px, py), end, radius, self._filter,
                 lambda shape: not one_way.passes(shape, px, py, radius),
             )  # fmt: skip
+        if found is not None:
+            found = stairs.face(found, px, py, ux, uy, radius)
+        if down is not None and (found is None or not stairs.walkable(found, ux, uy, config)):
+            found = stairs.below(self._sweep, px, py, down, (ux, uy), config) or found
         ground = found[0].body if found is not None else None
         if found is None or ground is None:
             return None, None
+        if move != 0.0:
+            # The tread ahead (stairs.step_up ahead of the velocity relative to this ground).
+            _, gvx, gvy, _ = body_motion(ground)
+            step = stairs.step_up(
+                self._sweep, found, px, py, body.vx - gvx, body.vy - gvy, ux, uy, move, config
+            )
+            if step is not None and step[0].body is not None:
+                found, ground = step, step[0].body
         _, hx, hy, nx, ny = found
         # The ground's frame at our centre, as pymunk's step needs it: positions move with the
         # velocity before the step, so standing still on a ground turning by θ = ω·dt this
