@@ -17,6 +17,7 @@ import pymunk
 
 from playground import movers as movers_mod
 from playground.controller import ledge as ledge_mod
+from playground.controller import stairs as stairs_mod
 from playground.controller import switches
 from playground.controller._vec import ZERO
 from playground.controller.config import ControllerConfig
@@ -373,4 +374,20 @@ def _gravity_rule_ignored() -> Iterator[None]:
 def _ring_spin_stopped() -> Iterator[None]:
     """Spinning movers stand still: a ``spin`` path keeps its starting angle."""
     with replaced(movers_mod.Spin, "pose", lambda _: lambda self, t: (self.position, self.angle)):
+        yield
+
+
+@register("stairs_no_step_up")
+def _stairs_no_step_up() -> Iterator[None]:
+    """The probe never looks ahead for a tread: a walking player finds a riser only once its
+    centre is over it, and its cap strikes the nosing first."""
+    with replaced(stairs_mod, "ahead", lambda _: lambda *a, **k: None):
+        yield
+
+
+@register("stairs_no_step_down")
+def _stairs_no_step_down() -> Iterator[None]:
+    """No step down: a grounded player whose probe loses the ground goes AIRBORNE, however
+    near the tread below."""
+    with replaced(stairs_mod, "below", lambda _: lambda *a, **k: None):
         yield
