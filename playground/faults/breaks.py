@@ -161,6 +161,14 @@ def _balance_off() -> Iterator[None]:
         yield
 
 
+@register("balance_absolute_spin")
+def _balance_absolute_spin() -> Iterator[None]:
+    """The balance damps the body's absolute spin instead of its spin relative to the ground:
+    on a turning floor (inside a spinning ring) the capsule lags behind its up."""
+    with controller_laws(balance=argument_changed(Laws, "hit", lambda hit: None)):
+        yield
+
+
 @register("grip_reading")
 def _grip_reading() -> Iterator[None]:
     """The controller's own grip reading is halved (the joint itself is unchanged)."""
