@@ -41,8 +41,10 @@ class Expectation(Table):
     """A check on one body's quantity.
 
     ``check``: ``at`` time ``t``; ``always`` / ``eventually`` / ``mean`` over ``window`` (default
-    the whole run). Compare with ``equals`` (± ``tolerance`` + ``relative``·|equals|), or bound
-    with ``above`` / ``below``; a state compares with ``equals`` or ``one_of``.
+    the whole run); ``impulse``, a force's integral over the window (N·s: each step's reading,
+    the step's mean force, times dt, over the steps after the window's start). Compare with
+    ``equals`` (± ``tolerance`` + ``relative``·|equals|), or bound with ``above`` / ``below``; a
+    state compares with ``equals`` or ``one_of``.
 
     The value compared is the quantity, minus the same quantity of ``relative_to``, minus the
     reading ``minus`` (another body's force, say), filtered if asked; then, with ``angle_to``,
@@ -52,7 +54,8 @@ class Expectation(Table):
     mass: with ``weights_of = "player"``, ``equals``, ``tolerance``, ``above`` and ``below``
     count weights m·g₀ of that body (``equals = [0.0, 1.0]``: one weight, straight up); with
     ``per_mass_of = "player"`` they are newtons per kilogram of it, an acceleration
-    (``equals = [0.0, 10.81]``: m·(g + a) with g + a = 10.81 m/s²).
+    (``equals = [0.0, 10.81]``: m·(g + a) with g + a = 10.81 m/s²). An ``impulse`` counts
+    weight-seconds, or N·s per kilogram, a speed (``equals = [0.0, 4.0]``: m·v with v = 4 m/s).
     """
 
     name: str | None = Field(
@@ -64,7 +67,7 @@ class Expectation(Table):
         default=None, description="For vectors: x, y or the length; none compares the vector."
     )
     filtered: bool = Field(default=False, description="1€-filtered force reading.")
-    check: Literal["at", "always", "eventually", "mean"] = "at"
+    check: Literal["at", "always", "eventually", "mean", "impulse"] = "at"
     t: NonNegative | None = Field(default=None, description="For check = 'at', s.")
     window: Annotated[tuple[NonNegative, NonNegative], Strict(False)] | None = Field(
         default=None, description="(start, end), s."

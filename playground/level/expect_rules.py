@@ -86,7 +86,18 @@ def _relative_to(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]
 
 def _change(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]:
     if exp.change and (exp.check == "at" or exp.quantity == "state"):
-        yield Problem(f"{path}.change", "change needs a window (always, eventually, mean)")
+        yield Problem(f"{path}.change", "change needs a window (always, eventually, mean, impulse)")
+
+
+def _impulse(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]:
+    """An impulse integrates a force over a window of some length."""
+    if exp.check != "impulse" or exp.quantity == "state":
+        return
+    if exp.quantity not in FORCE_QUANTITIES + CONTROLLER_QUANTITIES or exp.angle_to is not None:
+        what = "an angle" if exp.angle_to is not None else exp.quantity
+        yield Problem(f"{path}.check", f"an impulse integrates a force, not {what}")
+    if exp.window is not None and exp.window[1] == exp.window[0]:
+        yield Problem(f"{path}.window", "an impulse needs a window of some length")
 
 
 def _timing(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]:
@@ -113,8 +124,8 @@ def _state(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]:
         yield Problem(f"{path}.quantity", f"{exp.body!r} is not an actor: it has no state")
     if not isinstance(exp.equals, str) and exp.one_of is None:
         yield Problem(path, "a state check needs equals = 'state' or one_of = [...]")
-    if exp.check == "mean":
-        yield Problem(f"{path}.check", "a state has no mean")
+    if exp.check in ("mean", "impulse"):
+        yield Problem(f"{path}.check", f"a state has no {exp.check}")
     if exp.above is not None or exp.below is not None or exp.component is not None:
         yield Problem(path, "a state compares with equals or one_of only")
 
@@ -201,7 +212,7 @@ def _own_terms(path: str, exp: Expectation, ctx: Context) -> Iterator[Problem]:
         yield Problem(path, "give weights_of or per_mass_of, not both")
 
 
-_COMMON_RULES: tuple[Rule, ...] = (_relative_to, _change, _timing, _own_terms)
+_COMMON_RULES: tuple[Rule, ...] = (_relative_to, _change, _impulse, _timing, _own_terms)
 _STATE_RULES: tuple[Rule, ...] = (_state,)
 _VALUE_RULES: tuple[Rule, ...] = (_comparison, _own_reading, _minus, _angle_to, _kind_of_value)
 

@@ -1,9 +1,9 @@
 """Checks: a level's expectations, watched every step of a scene and judged at the end of a run.
 
 Each :class:`playground.level.Expectation` becomes a :class:`Check` that samples one body's
-quantity in the OBSERVE stage — at a time, always or eventually within a window, or as a mean over
-it — and ends as a :class:`CheckResult` whose detail reads like a test failure: the check, what was
-expected, what happened, and when.
+quantity in the OBSERVE stage — at a time, always or eventually within a window, as a mean over
+it, or a force's impulse over it — and ends as a :class:`CheckResult` whose detail reads like a
+test failure: the check, what was expected, what happened, and when.
 
 >>> from playground.level import find, load
 >>> from playground.scene import build
@@ -87,11 +87,13 @@ def mass_of(level: Level, body: str) -> float:
 
 
 def _own_terms(exp: Expectation, level: Level) -> tuple[float, str]:
-    """What one of a check's numbers stands for, N (1 for newtons), and its name."""
+    """What one of a check's numbers stands for, N or N·s (1 for newtons, newton-seconds), and
+    its name."""
+    seconds = "·s" if exp.check == "impulse" else ""
     if exp.weights_of is not None:
-        return mass_of(level, exp.weights_of) * G0, f"weights of {exp.weights_of}"
+        return mass_of(level, exp.weights_of) * G0, f"weights{seconds} of {exp.weights_of}"
     if exp.per_mass_of is not None:
-        return mass_of(level, exp.per_mass_of), f"N/kg of {exp.per_mass_of}"
+        return mass_of(level, exp.per_mass_of), f"N{seconds}/kg of {exp.per_mass_of}"
     return 1.0, ""
 
 
@@ -141,6 +143,8 @@ class Check:
         self.exp = exp
         self.name = name_of(exp)
         self.unit = "rad" if exp.angle_to is not None else UNITS[exp.quantity]
+        if exp.check == "impulse":
+            self.unit += "·s"
         self.dt: float = scene.level.settings.dt
         self._window = exp.window or (0.0, scene.level.settings.seconds)
         # The check's numbers in the reading's unit: newtons for a check in a body's own terms.
@@ -245,7 +249,11 @@ class Check:
         if exp.check == "at":
             self._taken = (t, value)
             return
-        if exp.check == "mean":
+        if exp.check == "mean" or exp.check == "impulse":
+            # An impulse takes the steps after the window's start: a reading is its step's mean
+            # force, and the step that ends at the start lies before it.
+            if exp.check == "impulse" and t < self._window[0] + self.dt / 2:
+                return
             v = np.asarray(value, dtype=np.float64)
             self._sum = v if self._sum is None else self._sum + v
             self._count += 1
@@ -346,15 +354,20 @@ class Check:
             )
         short = stop - end > self.dt / 2
         tail = f"; the run ended at {end:g} s, before the window closed" if short else ""
-        if exp.check == "mean":
-            assert self._sum is not None
-            m = self._sum / self._count
-            mean: Value = (float(m[0]), float(m[1])) if m.ndim else float(m)
-            ok, _ = self._compare(mean)
-            got = f"got {_fmt(mean, self.unit)}{'' if ok else self._off(mean)}"
+        if exp.check == "mean" or exp.check == "impulse":
+            if self._sum is None:
+                return self._fail(
+                    f"expected the {exp.check} over {span} to be {want}, but no "
+                    f"step ended in the window after its start{tail}"
+                )
+            m = self._sum / self._count if exp.check == "mean" else self._sum * self.dt
+            total: Value = (float(m[0]), float(m[1])) if m.ndim else float(m)
+            ok, _ = self._compare(total)
+            got = f"got {_fmt(total, self.unit)}{'' if ok else self._off(total)}"
             return self._verdict(
                 ok and not short,
-                f"expected the mean over {span} to be {want}, {got} ({self._count} steps){tail}",
+                f"expected the {exp.check} over {span} to be {want}, {got} "
+                f"({self._count} steps){tail}",
             )
         if exp.check == "always":
             if self._first_bad is not None:

@@ -58,6 +58,19 @@ def _problems(expect: str) -> list[str]:
             'body = "player"\nquantity = "state"\ncheck = "mean"\nequals = "grounded"',
             "expect.0.check: a state has no mean",
         ),
+        (
+            'body = "player"\nquantity = "state"\ncheck = "impulse"\nequals = "grounded"',
+            "expect.0.check: a state has no impulse",
+        ),
+        (
+            'body = "player"\nquantity = "position"\ncomponent = "y"\ncheck = "impulse"\nbelow = 1',
+            "expect.0.check: an impulse integrates a force, not position",
+        ),
+        (
+            'body = "player"\nquantity = "hover"\ncheck = "impulse"\nwindow = [1, 1]\n'
+            "equals = [0, 1]",
+            "expect.0.window: an impulse needs a window of some length",
+        ),
         ('body = "crate"\nquantity = "angle"\nt = 1', "expect.0: nothing to compare"),
         (
             'body = "crate"\nquantity = "angle"\nt = 1\nequals = 0\nbelow = 1',

@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+from playground.forces.ledger import Category
 from playground.level import LevelError, loads
 from playground.scene import build
 from playground.scene.checks import watch
@@ -273,6 +274,74 @@ above = 5.0
     assert not always[0] and "first broken at t = 0.5083 s" in always[1], always[1]
     assert eventually[0] and "first at t = 0.5083 s" in eventually[1], eventually[1]
     assert not never[0] and "closest at t = 1 s" in never[1], never[1]
+
+
+PUSH = 3.0
+"""N: the force pushing the 1 kg ball along x from 0.5 s (the impulse test)."""
+TOL_IMPULSE = 1e-9
+"""N·s: 60 step readings of 3 N summed, each the ball's Δv·m/dt recovered to ~1e-15 N."""
+
+
+def test_impulse_integrates_a_force_over_its_window() -> None:
+    """A 1 kg ball pushed with 3 N along x from 0.5 s: the impulse of its support over
+    [0.75, 1] s is 3 N · 0.25 s = 0.75 N·s (each step after the window's start, its reading
+    times dt: the step that ends at 0.75 s is not in it); over [0.25, 1] s, [1.5, 0] N·s, 1.5
+    m/s per kilogram of the ball; its change since 0.5 s over [0.5, 1] s, 1.5 N·s; 1 N·s there
+    is off by 0.5 N·s."""
+    scene = build(
+        loads(
+            GLIDE
+            + "[tracking]\nbodies = ['ball']\n"
+            + f"""
+[[expect]]
+body = "ball"
+quantity = "support"
+component = "x"
+check = "impulse"
+window = [0.75, 1.0]
+equals = 0.75
+tolerance = {TOL_IMPULSE}
+
+[[expect]]
+body = "ball"
+quantity = "support"
+check = "impulse"
+window = [0.25, 1.0]
+equals = [1.5, 0.0]
+per_mass_of = "ball"
+tolerance = {TOL_IMPULSE}
+
+[[expect]]
+body = "ball"
+quantity = "support"
+component = "x"
+change = true
+check = "impulse"
+window = [0.5, 1.0]
+equals = 1.5
+tolerance = {TOL_IMPULSE}
+
+[[expect]]
+body = "ball"
+quantity = "support"
+component = "x"
+check = "impulse"
+window = [0.25, 1.0]
+equals = 1.0
+tolerance = {TOL_IMPULSE}
+"""
+        )
+    )
+    checks = watch(scene)
+    ball = scene.world.body("ball")
+    while scene.world.time < 1.0 - 1e-9:
+        if scene.world.time >= 0.5 - 1e-9:
+            scene.world.apply_force(ball, (PUSH, 0.0), category=Category.SUPPORT)
+        scene.world.step()
+    scalar, vector, change, wrong = checks.results()
+    assert scalar.passed and vector.passed and change.passed, (scalar, vector, change)
+    assert "N·s" in scalar.detail and "N·s/kg of ball" in vector.detail, vector.detail
+    assert not wrong.passed and "off by 0.5 N·s" in wrong.detail, wrong.detail
 
 
 def test_mean_change_relative_to_and_norm() -> None:
