@@ -215,6 +215,18 @@ def _ledge_climb_reaction_off() -> Iterator[None]:
         yield
 
 
+@register("jump_reaction_off")
+def _jump_reaction_off() -> Iterator[None]:
+    """The take-off's reaction on a dynamic ground is lost (Newton's third law broken): a free
+    plank, a crate or a raft no longer feels the player jump off it."""
+
+    def make(original: Callable[[Reacting, Vec], Vec]) -> Callable[[Reacting, Vec], Vec]:
+        return lambda law, force: (0.0, 0.0) if law == "jump" else original(law, force)
+
+    with controller_laws(reaction=make):
+        yield
+
+
 @register("ledge_held_in_world")
 def _ledge_held_in_world() -> Iterator[None]:
     """A ledge's edge is held fixed in the world instead of on the ledge's own body: a moving

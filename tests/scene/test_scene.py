@@ -38,6 +38,12 @@ STAND_WINDOW = 0.2
 it (the shipped levels' misplacements were 5 and 10 cm); one placed further up is dropped, and a
 drop is not a load-time kick."""
 
+TOL_GIVE_REL = 1e-6
+"""On a dynamic ground the contact under it takes the player's weight from the first step,
+without a warm start, so the ground gives under the new load and the hover answers: plank_jump's
+plank sinks 2.4 nm and the perceived gravity overshoots g by 8.5e-8 of it; a load-time kick is
+orders of magnitude more."""
+
 START_STEPS = 12
 """0.1 s at the default dt: before anything in a shipped level reaches a player placed at rest
 (the earliest event, the seesaw's plank tipping under the player, unloads it)."""
@@ -78,7 +84,8 @@ def test_the_issue_levels_are_covered() -> None:
 def test_player_placed_at_rest_reads_its_weight(level: str, name: str) -> None:
     """Law: on its first step a player placed at rest on the ground is grounded at ride height,
     its support along the ground normal is its weight m·g_n, and its perceived gravity along
-    the field never exceeds |g| in the first START_STEPS steps (no spike for the filter)."""
+    the field never exceeds |g| in the first START_STEPS steps (no spike for the filter; on a
+    dynamic ground, no more than the ground's give under the new load)."""
     scene = build(load(find(level)))
     world = scene.world
     ctrl = scene.controllers[name]
@@ -101,10 +108,11 @@ def test_player_placed_at_rest_reads_its_weight(level: str, name: str) -> None:
     support = f.support[0] * nx + f.support[1] * ny
     assert abs(support - weight) <= TOL_REL * weight, (level, name, f.support, weight)
     g_norm = math.hypot(*g)
+    tol = TOL_GIVE_REL if hit.dynamic else TOL_REL
     for _ in range(START_STEPS):
         pg = world.perceived_gravity(name)
         along = (pg[0] * g[0] + pg[1] * g[1]) / g_norm
-        assert along <= g_norm * (1.0 + TOL_REL), (level, name, world.time, pg)
+        assert along <= g_norm * (1.0 + tol), (level, name, world.time, pg)
         world.step()
 
 
