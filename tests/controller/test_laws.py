@@ -27,6 +27,7 @@ from playground import (
     Script,
     State,
     World,
+    WorldConfig,
 )
 from playground._engine.state import BodyState
 from playground.controller import ControllerState, GroundHit, Sensed, laws
@@ -452,6 +453,45 @@ def test_the_push_takes_the_heads_find_unless_the_chest_has_a_strictly_nearer_on
     assert player.pushed is not None
     (x, _), _ = player.pushed
     assert ("head" if x > 0.0 else "chest") == pushed
+
+
+PUSHED_MASS = 400.0
+"""kg: a free crate in zero gravity, heavy enough to stay within reach while pushed."""
+PUSH_STEPS = 12
+"""Steps of pushing checked (0.1 s at 1/120 s: the player, pushed back, stays within reach)."""
+TOL_MOMENTUM_REL = 1e-9
+"""Relative, a body's momentum change over a step against the push's impulse: the same force
+integrated by the engine, rounding only."""
+
+
+@pytest.mark.parametrize("mass_factor", [0.5, 1.0, 2.0])
+@pytest.mark.parametrize("substeps", [1, 2, 3, 4])
+def test_the_push_reading_is_the_steps_mean_over_its_substeps(
+    substeps: int, mass_factor: float
+) -> None:
+    """Newton's third law step by step, weightless: the only force on a free crate is the push
+    and the only one on the player its reaction, so over each step the crate's momentum changes
+    by −push·dt and the player's by push·dt, where push is the controller's reading (the
+    reaction on us): the push acts through every substep, so the reading is the step's mean,
+    at any substeps and mass."""
+    world = World(WorldConfig(substeps=substeps), gravity=(0.0, 0.0))
+    config = ControllerConfig(mass=mass_factor * M)
+    script = Script(((0.0, Intent(push=True)),))
+    player = Controller(world, "player", (0.0, 0.0), config, script)
+    crate = pymunk.Body(PUSHED_MASS, pymunk.moment_for_circle(PUSHED_MASS, 0.0, 0.2))
+    crate.position = (0.6, config.half_length)
+    world.add("crate", crate, pymunk.Circle(crate, 0.2))
+    dt = world.config.dt
+    for _ in range(PUSH_STEPS):
+        p0, c0 = player.body.velocity, crate.velocity
+        world.step()
+        px, py = player.last_forces.push
+        assert player.pushed is not None and px < 0.0
+        dp = (player.body.velocity - p0) * player.body.mass
+        dc = (crate.velocity - c0) * PUSHED_MASS
+        impulse = math.hypot(px, py) * dt
+        assert math.hypot(dp.x - px * dt, dp.y - py * dt) <= TOL_MOMENTUM_REL * impulse
+        assert math.hypot(dc.x + px * dt, dc.y + py * dt) <= TOL_MOMENTUM_REL * impulse
 
 
 # -- the laws as functions of what was sensed --------------------------------------------------
