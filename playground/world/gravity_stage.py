@@ -19,7 +19,6 @@ runs only when one of the two is needed.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
@@ -32,6 +31,7 @@ from playground.forces.ledger import Category, ForceLedger
 from playground.forces.tracked import FieldForces, FieldOnBodies
 from playground.gravity import GravityField, GravityRule, RotatingRoom, Uniform, apply_rules
 from playground.gravity.plain import PlainField, PointField, point_field
+from playground.gravity.rule import ruled
 from playground.vec import Vec
 
 __all__ = ["GravityStage"]
@@ -190,18 +190,14 @@ class GravityStage:
             self.space.gravity = g_space  # setting it wakes every body: only when it changes
         if self.field.uniform:
             # Only bodies with their own rule need a correction force: m·(g_rule − g_space), in
-            # plain floats (a handful of bodies: cheaper than numpy's per-call cost).
+            # plain floats (a handful of bodies: cheaper than numpy's per-call cost), by the
+            # rule's one formula as every other path (a copy of it here could drop the scale of
+            # a rule with its own direction unseen: a review's mutation did).
             gx, gy = g_space
-            magnitude = math.hypot(gx, gy)
             bodies, names, add = self._bodies, self._names, self.ledger.add
             for body_id, rule in self._rules.items():
                 body = bodies[names[body_id]]
-                scale, direction = rule.scale, rule.direction
-                if direction is None:
-                    rx, ry = scale * gx, scale * gy
-                else:
-                    rx = scale * magnitude * direction[0]
-                    ry = scale * magnitude * direction[1]
+                rx, ry = ruled(gx, gy, rule.scale, rule.direction)
                 m = raw.mass(raw.handle(body))
                 add(body, (m * (rx - gx), m * (ry - gy)), category=_PASSIVE)
             return None

@@ -1,14 +1,19 @@
 """Laws of the gravity stage: it runs only when needed, a rule in a uniform field costs one
-correction force, and a body that leaves takes its rule with it."""
+correction force, a body that leaves takes its rule with it, and a ruled body falls at its rule's
+gravity in every kind of field."""
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import pymunk
 import pytest
 
 from playground._engine.batch import BodyRows
 from playground.forces import Category
-from playground.gravity import GravityRule, Radial, Uniform
+from playground.gravity import GravityField, GravityRule, Radial, RotatingRoom, Uniform
+from playground.vec import Vec
 from playground.world.world import World
 
 G = 9.81
@@ -67,3 +72,60 @@ def test_a_field_that_varies_is_evaluated_at_the_bodies_of_one_read(between: boo
     if between:
         expected[world.body("b").id] = [2.0 * g for g in world.gravity_at("b")]
     assert by_id == expected
+
+
+RULES = [
+    GravityRule(scale, direction)
+    for scale in (0.0, 0.5, 2.0)
+    for direction in (None, (1.0, 0.0), (-0.6, 0.8))
+]
+"""Rules with and without their own direction, at scales that drop, halve and double gravity."""
+FIELDS: dict[str, GravityField] = {
+    "down": Uniform((0.0, -G)),
+    "oblique": Uniform((3.0, -4.0)),
+    "rotating room": RotatingRoom(rate=0.5),
+    "planet": Radial(center=(0.0, -20.0), radius=20.0),
+}
+"""Uniform fields (a correction force on ``space.gravity``, in plain floats), one that turns in
+time, and one that varies in space (the field evaluated at each body)."""
+RULED_STEPS = 60
+"""Steps of free fall checked (0.5 s at the default dt)."""
+TOL_DV = 1e-12
+"""m/s: a step's velocity change against g·dt, both a few float operations on |g| ≲ 20 m/s²."""
+
+
+def _ruled(rule: GravityRule, field: GravityField, point: tuple[float, float], t: float) -> Vec:
+    """The rule's gravity written out on its own (not through the rule's formula): scale × the
+    field, or scale × |field| along the rule's direction, m/s²."""
+    (fx, fy) = field.at(np.array([point]), t)[0]
+    if rule.direction is None:
+        return (rule.scale * fx, rule.scale * fy)
+    size = rule.scale * math.hypot(fx, fy)
+    return (size * rule.direction[0], size * rule.direction[1])
+
+
+@pytest.mark.parametrize("rule", RULES, ids=lambda r: f"scale{r.scale:g}-{r.direction}")
+@pytest.mark.parametrize("field", list(FIELDS))
+def test_a_ruled_body_falls_at_its_rules_gravity_in_every_field(
+    field: str, rule: GravityRule
+) -> None:
+    """Law: each step a free body with its own rule gains g·dt, g its rule's gravity where it
+    is: the scale times the field, or the scale times |field| along its own direction — its
+    scale counts with an own direction too — whichever way the stage applies it (a correction
+    force on a uniform field, the field evaluated at the body where it varies); and the world
+    reports that g."""
+    world = World(gravity=FIELDS[field])
+    world.add_box("a", mass=2.0, size=(0.2, 0.2), position=(0.5, 3.0))
+    world.set_gravity_rule("a", rule)
+    body = world.body("a")
+    dt = world.config.dt
+    for _ in range(RULED_STEPS):
+        p, v0 = body.position, body.velocity
+        gx, gy = _ruled(rule, FIELDS[field], (p.x, p.y), world.time)
+        assert world.gravity_at("a") == (
+            pytest.approx(gx, abs=TOL_DV),
+            pytest.approx(gy, abs=TOL_DV),
+        )
+        world.step()
+        dv = body.velocity - v0
+        assert math.hypot(dv.x - gx * dt, dv.y - gy * dt) <= TOL_DV, (world.time, dv, (gx, gy))
