@@ -290,10 +290,17 @@ class ControllerConfig:
         gt=0.0,
         le=MAX_WEIGHTS,
     )
+    crush_release: float = param(
+        0.8,
+        doc="Crushed stays crushed while the load from above stays above this share of "
+        "crush_force (hysteresis: a load swinging around crush_force crushes once).",
+        gt=0.0,
+        le=1.0,
+    )
     crush_release_time: float = param(
         0.15,
-        doc="Crushed stays crushed until the load from above has stayed at most crush_force "
-        "(or off) this long.",
+        doc="Crushed stays crushed until the load from above has stayed at most crush_release "
+        "× crush_force (or off) this long.",
         unit="s",
         ge=0.0,
     )

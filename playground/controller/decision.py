@@ -27,7 +27,7 @@ from playground.controller.states import (
 )
 from playground.intents import Intent
 
-__all__ = ["decide", "is_still", "steady"]
+__all__ = ["crush_limit", "decide", "is_still", "steady"]
 
 
 def decide(
@@ -118,9 +118,10 @@ def decide(
     else:
         # The contact load first: it is zero while hovering, and the threshold is a call.
         pressed = sensed.contact_load > 0.0
-        if pressed and sensed.load > config.crush_threshold(sensed.body.mass):
+        if pressed and sensed.load > crush_limit(current, sensed.body.mass, config):
             # Crushed: bearing more than crush_force from above with the load still on us (a
-            # crusher held off at arm's length by the push no longer pins us).
+            # crusher held off at arm's length by the push no longer pins us); once crushed,
+            # more than crush_release of it.
             current = CRUSHED
         elif current is CRUSHED and state.relieved + dt < config.crush_release_time:
             # Relieved only for a moment: a rocking or bouncing load swings around the
@@ -153,6 +154,19 @@ def decide(
         still, relieved, getup_at, getup_from, grip, take_off_from, intent.gravity,
         intent.nullify, ledge,
     )  # fmt: skip
+
+
+def crush_limit(state: State, mass: float, config: ControllerConfig) -> float:
+    """The load from above (N) beyond which a body of ``mass`` (kg) in ``state`` is crushed:
+    the crush threshold, and once crushed ``crush_release`` of it, so that a load swinging a
+    little around the threshold crushes once instead of making the state flicker.
+
+    >>> config = ControllerConfig()
+    >>> round(crush_limit(GROUNDED, 70.0, config), 1), round(crush_limit(CRUSHED, 70.0, config), 1)
+    (1500.0, 1200.0)
+    """
+    threshold = config.crush_threshold(mass)
+    return threshold * config.crush_release if state is CRUSHED else threshold
 
 
 def steady(sensed: Sensed, config: ControllerConfig) -> bool:
