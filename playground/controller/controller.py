@@ -53,8 +53,9 @@ class Controller:
     - **probe**: a circle swept from the centre along −up (``probe_length``) finds the ground.
     - **stairs** (:mod:`~playground.controller.stairs`): the probe's reading of a sharp corner
       is the face past it, not the slant from the corner to the circle; walking, the body
-      looks ``radius + speed/(2·hover_frequency)`` ahead (its cap plus the way it goes in half
-      the hover's period) for a tread parallel to its ground, above its clearance and at most
+      looks ``radius + probe_radius + speed/(2·hover_frequency)`` ahead (its probe's edge plus
+      the way it goes in half the hover's period) for a tread parallel to its ground, above its
+      clearance and at most
       the step's reach ``ride_height − half_length`` above its feet — the height of its lower
       cap's centre, above which a riser meets its straight side, a wall — and takes it for the
       ground, so the hover lifts it over the riser before the cap meets it; grounded and

@@ -49,6 +49,7 @@ SAME_FACE = 1.0e-12
 on a face hit; a corner's normal differs by far more)."""
 
 _COS_CORNER_TILT = math.cos(CORNER_TILT)
+_COS_TREAD_PARALLEL = math.cos(TREAD_PARALLEL)
 
 
 def reach(config: ControllerConfig) -> float:
@@ -71,7 +72,7 @@ def lead_time(config: ControllerConfig) -> float:
     """How far ahead in time a moving body looks for a tread to step up onto, s: half the
     hover's natural period, 1/(2·``hover_frequency``), in which the critically damped hover
     covers 1 − (1 + π)·e^(−π) = 82 % of a step up (it must be up before the cap reaches the
-    riser)."""
+    riser). :func:`ahead` computes it inline."""
     return 0.5 / config.hover_frequency
 
 
@@ -107,44 +108,40 @@ def ahead(
     config: ControllerConfig,
 ) -> Hit | None:
     """The tread ahead to step up onto, or None: a walking body (``move`` ≠ 0 along the ground's
-    tangent, at ``speed`` m/s that way relative to the ground) looks ``radius + speed ·
-    lead_time`` ahead of its centre (px, py) (m) for a surface parallel to the ground it
-    stands on (``found``, walkable), above that ground and at most :func:`reach` above its
-    feet (where they are at ride height), reached by sweeping the probe's circle down from the
-    reach's height to the ground's level. The hover then lifts it over the riser before its cap
-    meets it, and the drive carries it on at its speed."""
+    tangent, at ``speed`` m/s that way relative to the ground) looks ``radius + probe_radius +
+    speed · lead_time`` ahead of its centre (px, py) (m) — where the leading edge of its probe's
+    circle will be — for a surface parallel to the ground it stands on (``found``, walkable),
+    more than :func:`clearance` above that ground and at most :func:`reach` above its feet
+    (where they are at ride height): a ray down from the reach's height to the clearance's.
+    The hover then lifts it over the riser before its cap meets it, and the drive carries it
+    on at its speed. (A ray, not the probe's circle: on flat ground it ends short of the ground
+    and meets nothing, the cheapest query there is; and it reads a face's normal, never a
+    corner's.)"""
     _, hx, hy, nx, ny = found
-    step_up = reach(config)
-    rho = config.probe_radius
+    step_up = config.ride_height - config.half_length
+    low = config.ride_height - 0.5 * config.height
     direction = 1.0 if move > 0.0 else -1.0
     tx, ty = direction * ny, -direction * nx
-    d = config.radius + max(0.0, speed) * lead_time(config)
-    # The feet at ride height, and the sweep's start: d ahead, a circle over the reach.
+    d = config.radius + config.probe_radius + max(0.0, speed) * 0.5 / config.hover_frequency
+    # The feet at ride height; the ray from d ahead at the reach over them down to the
+    # clearance over the ground's own level.
     fx, fy = px - nx * config.ride_height, py - ny * config.ride_height
-    top = step_up + rho
-    ax, ay = fx + tx * d + nx * top, fy + ty * d + ny * top
-    # Down to the ground's own level: Chipmunk's index culls a shape whose bounding box the
-    # sweep's centre line misses, whatever the radius, so the line must reach into a tread's.
-    depth = (ax - hx) * nx + (ay - hy) * ny
-    if depth <= rho:
+    ax, ay = fx + tx * d + nx * step_up, fy + ty * d + ny * step_up
+    depth = (ax - hx) * nx + (ay - hy) * ny - low
+    if depth <= 0.0:
         return None
     bx, by = ax - nx * depth, ay - ny * depth
-    tread = sweep.nearest(ax, ay, bx, by, rho)
-    # A circle that starts overlapping a shape (a wall, a box above the reach) gets Chipmunk's
-    # hit at alpha 0, reported at the sweep's end: that is no tread.
+    tread = sweep.nearest(ax, ay, bx, by, 0.0)
+    # A ray that starts inside a shape (a wall, a box above the reach) gets Chipmunk's hit at
+    # alpha 0, reported at the ray's end: that is no tread.
     if tread is None or (tread[1] == bx and tread[2] == by):
         return None
-    # Its nosing, seen within rho of the circle's axis, stands for the tread beyond it.
-    tread = face(tread, ax, ay, nx, ny, rho)
     step, sx, sy, mx, my = tread
-    rise = (sx - hx) * nx + (sy - hy) * ny
     if (
-        step.body is None
-        or one_way.passes(step, ax, ay, rho)
-        or mx * nx + my * ny < math.cos(TREAD_PARALLEL)
-        or rise <= clearance(config)
-        or (sx - fx) * nx + (sy - fy) * ny > step_up
-        or (ax - sx) * nx + (ay - sy) * ny < rho
+        (sx - hx) * nx + (sy - hy) * ny <= low
+        or mx * nx + my * ny < _COS_TREAD_PARALLEL
+        or step.body is None
+        or one_way.passes(step, ax, ay, 0.0)
     ):
         return None
     return tread

@@ -25,7 +25,7 @@ TOL_FLOAT = 1e-12
 """m or unit: round-off on geometry of a few metres."""
 TOL_RIDE = 1e-6
 """m: the height over the floor 1 s after the last riser down: the critically damped hover has
-settled the drop (9.4e-10 m the worst of every flight at every variant, measured)."""
+settled the drop (9.5e-10 m the worst of every flight at every variant, measured)."""
 TOL_SPEED_REL = 1e-3
 """Relative, the speed up and down a flight against max_speed: the drive holds it to round-off
 on flat treads (measured: 4.0 m/s to 1e-9 on risers of 0.1 and 0.2 m, treads 0.3 and 0.5 m)."""
@@ -106,7 +106,8 @@ def test_a_face_and_a_rounded_shape_keep_the_probes_normal() -> None:
 @pytest.mark.parametrize("riser", [0.1, 0.2, 0.29])
 def test_walking_toward_a_riser_within_reach_finds_the_tread_ahead(riser: float) -> None:
     """At ride height over the floor, 0.5 m before a riser, walking at 4 m/s toward it, the
-    body looks radius + speed·lead_time = 0.25 + 0.4 m ahead and finds the tread: a hit on its
+    body looks radius + probe_radius + speed·lead_time = 0.25 + 0.1 + 0.4 m ahead and finds the
+    tread: a hit on its
     top, normal up; walking away or standing (move 0) it finds nothing."""
     sweep = _box(riser, 0.5, 3.0)
     floor = sweep.nearest(0.0, RIDE, 0.0, RIDE - CONFIG.probe_length, RHO)
@@ -152,10 +153,8 @@ def test_a_tread_below_the_probe_within_reach_is_found() -> None:
     assert stairs.below(sweep, 0.0, 2.0, (0.0, -1.0), (0.0, 1.0), CONFIG) is None
 
 
-FLIGHTS = [(0.1, 0.3), (0.1, 0.5), (0.2, 0.3), (0.2, 0.5), (0.25, 0.5)]
-"""(riser, tread), m: the flights walked at full speed up and down at every variant. (0.25 m on
-0.3 m, 40°, is not among them: at dt 1/60 s its hover lags and the cap meets a nosing, and
-down the body falls 0.57 m behind the nosings at 4 m/s, past probe_length + reach.)"""
+FLIGHTS = [(0.1, 0.3), (0.1, 0.5), (0.2, 0.3), (0.2, 0.5), (0.25, 0.3), (0.25, 0.5)]
+"""(riser, tread), m: the flights walked at full speed up and down."""
 VARIANTS = [
     (mass, dt, substeps)
     for mass in (35.0, 70.0, 140.0)
@@ -165,6 +164,20 @@ VARIANTS = [
 """The robustness matrix's 27 variants: mass (kg), dt (s), substeps."""
 FAST_VARIANTS = [(70.0, 1 / 120, 1), (35.0, 1 / 60, 2), (140.0, 1 / 240, 4)]
 """Three of them for the fast tier: each mass, dt and substep count once."""
+STEEP_COARSE = ((0.25, 0.3), 1 / 60)
+"""The flight (40°) and the step at which the walk is not claimed: the hover, stepped at
+2πf·dt = 0.52, lags; in one substep the cap meets a nosing (the walk slows to 1.8 m/s), in
+four the body turns AIRBORNE for 0.1 s going down."""
+
+
+def _cases(variants: list[tuple[float, float, int]]) -> list[tuple[float, ...]]:
+    """Every flight at every variant but :data:`STEEP_COARSE`'s."""
+    return [
+        (riser, tread, mass, dt, substeps)
+        for riser, tread in FLIGHTS
+        for mass, dt, substeps in variants
+        if ((riser, tread), dt) != STEEP_COARSE
+    ]
 
 
 def _walk(riser: float, tread: float, mass: float, dt: float, substeps: int) -> None:
@@ -192,8 +205,7 @@ def _walk(riser: float, tread: float, mass: float, dt: float, substeps: int) -> 
     assert player.body.position.y == pytest.approx(RIDE, abs=TOL_RIDE)
 
 
-@pytest.mark.parametrize(("mass", "dt", "substeps"), FAST_VARIANTS)
-@pytest.mark.parametrize(("riser", "tread"), FLIGHTS)
+@pytest.mark.parametrize(("riser", "tread", "mass", "dt", "substeps"), _cases(FAST_VARIANTS))
 def test_a_flight_up_and_down_at_full_speed_grounded_throughout(
     riser: float, tread: float, mass: float, dt: float, substeps: int
 ) -> None:
@@ -202,8 +214,7 @@ def test_a_flight_up_and_down_at_full_speed_grounded_throughout(
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize(("mass", "dt", "substeps"), VARIANTS)
-@pytest.mark.parametrize(("riser", "tread"), FLIGHTS)
+@pytest.mark.parametrize(("riser", "tread", "mass", "dt", "substeps"), _cases(VARIANTS))
 def test_every_flight_at_every_variant(
     riser: float, tread: float, mass: float, dt: float, substeps: int
 ) -> None:
