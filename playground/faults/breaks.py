@@ -365,6 +365,22 @@ def _mover_velocity_late() -> Iterator[None]:
         yield
 
 
+@register("own_gravity_scale_ignored")
+def _own_gravity_scale_ignored() -> Iterator[None]:
+    """In a uniform field the gravity stage drops the scale of a rule with its own direction:
+    such a body falls at the field's |g| along its direction, while the world still reports the
+    rule's gravity (so a controller believes it)."""
+
+    def make(original: Callable[..., Any]) -> Callable[..., Any]:
+        def unscaled(gx: float, gy: float, scale: float, direction: Vec | None) -> Vec:
+            return original(gx, gy, scale if direction is None else 1.0, direction)  # type: ignore[no-any-return]
+
+        return unscaled
+
+    with replaced(gravity_stage, "ruled", make):
+        yield
+
+
 @register("gravity_rule_ignored")
 def _gravity_rule_ignored() -> Iterator[None]:
     """The gravity stage ignores per-body rules (nullified, scaled or own gravity): every body
