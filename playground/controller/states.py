@@ -44,7 +44,10 @@ class State(Enum):
     its animation by it:
 
     - GROUNDED: on walkable ground, hover and drive acting: idle, or the walk/run cycle at the
-      speed relative to the ground (``Controller.ground_velocity``).
+      speed relative to the ground (``Controller.ground_velocity``). On stairs it stays
+      GROUNDED up a flight (lifted onto the tread ahead) and down one, while it drops onto a
+      tread within its step's reach (:mod:`~playground.controller.stairs`): the walk cycle
+      over each step, not the fall.
     - AIRBORNE: no walkable ground under it (jumping, falling, or a step off an edge within
       ``coyote_time``, when a jump still works): the jump, or the fall.
     - HANGING: holding on with its hands (a body anywhere, or a ledge's edge) through the grip
