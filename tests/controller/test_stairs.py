@@ -153,6 +153,39 @@ def test_a_tread_below_the_probe_within_reach_is_found() -> None:
     assert stairs.below(sweep, 0.0, 2.0, (0.0, -1.0), (0.0, 1.0), CONFIG) is None
 
 
+LEANING_GAPS = (1.0,)
+"""m before a landing's edge from which a walk off it from rest is not claimed GROUNDED: the
+body is still accelerating at the edge, its up leans back with the drive's 5 m/s² (27°), its
+probe reads the landing behind it past the edge, and it drops past the step down (AIRBORNE
+0.083 s on the last riser, measured; docs/design.md, Stairs)."""
+
+
+@pytest.mark.parametrize("gap", [0.1, 0.3, 0.6, *LEANING_GAPS, 1.5, 2.0, 3.0])
+def test_walking_off_a_landing_from_rest(gap: float) -> None:
+    """From rest ``gap`` m before the edge of a 6 m landing atop 5 risers of 0.2 m on 0.3 m treads,
+    walking off at full input: GROUNDED all the way down (but from :data:`LEANING_GAPS`, where
+    it turns AIRBORNE for less than 0.1 s), at ride height on the floor at the end."""
+    world = World(WorldConfig(dt=1 / 120))
+    world.add_static_segment((-20.0, 0.0), (40.0, 0.0), radius=0.0)
+    end = _stairs(world, 0.2, 0.3, 5, 6.0)
+    edge = 0.3 * 5 + 6.0
+    player = Controller(world, "player", (edge - gap, 1.0 + RIDE))
+    world.run(1.0)
+    player.intent = Intent(move=1.0)
+    airborne = 0.0
+    changes = 0
+    while player.body.position.x < end:
+        world.step()
+        airborne += world.config.dt if player.state is State.AIRBORNE else 0.0
+        changes += player.transition is not None
+    if gap in LEANING_GAPS:
+        assert 0.0 < airborne < 0.1
+    else:
+        assert changes == 0
+    world.run(1.0)
+    assert player.body.position.y == pytest.approx(RIDE, abs=TOL_RIDE)
+
+
 FLIGHTS = [(0.1, 0.3), (0.1, 0.5), (0.2, 0.3), (0.2, 0.5), (0.25, 0.3), (0.25, 0.5)]
 """(riser, tread), m: the flights walked at full speed up and down."""
 VARIANTS = [
