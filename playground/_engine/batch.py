@@ -205,3 +205,66 @@ def touching_ids(space: pymunk.Space, buffer: batch.Buffer) -> NDArray[np.uintp]
     buffer.clear()
     batch.get_space_arbiters(space, _TOUCHING, buffer)
     return np.frombuffer(buffer.int_buf(), dtype=np.uintp)
+
+
+_FORCES = _F.BODY_ID | _F.FORCE | _F.TORQUE
+
+
+class ForceWrites:
+    """Set the force (N) and torque (N·m) of some bodies of a space in one batch read and one
+    batch write, instead of two C calls a body: every other body of the space gets back the
+    force and torque read from it. Only while no body of the space sleeps
+    (``set_space_bodies`` then writes rows to the wrong bodies): a space whose
+    ``sleep_time_threshold`` is infinite has none asleep.
+
+    >>> space = pymunk.Space()
+    >>> a, b = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
+    >>> space.add(a, b)
+    >>> b.force, b.torque = (5.0, 6.0), 7.0
+    >>> ids = np.array([a.id], dtype=np.uintp)
+    >>> ForceWrites().write(space, ids, np.array([[1.0, 2.0]]), np.array([3.0]))
+    >>> (tuple(a.force), a.torque), (tuple(b.force), b.torque)
+    (((1.0, 2.0), 3.0), ((5.0, 6.0), 7.0))
+    """
+
+    __slots__ = ("_at", "_buffer", "_for", "_id_bytes")
+
+    def __init__(self) -> None:
+        self._buffer = batch.Buffer()
+        self._id_bytes = b""
+        self._for: NDArray[np.uintp] | None = None
+        self._at = np.zeros(0, dtype=np.intp)
+
+    def write(
+        self,
+        space: pymunk.Space,
+        ids: NDArray[np.uintp],
+        force: NDArray[np.float64],
+        torque: NDArray[np.float64],
+    ) -> None:
+        """Set the bodies ``ids`` (distinct, each in the space; KeyError for one that is not)
+        to the (k, 2) rows of ``force`` and the (k,) ``torque``."""
+        buffer = self._buffer
+        buffer.clear()
+        batch.get_space_bodies(space, _FORCES, buffer)
+        raw = bytes(buffer.int_buf())
+        if raw != self._id_bytes or self._for is not ids:
+            self._at = _rows_of(np.frombuffer(raw, dtype=np.uintp), ids)
+            self._id_bytes = raw
+            self._for = ids
+        rows = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 3)
+        at = self._at
+        rows[at, 0:2] = force
+        rows[at, 2] = torque
+        batch.set_space_bodies(space, _F.FORCE | _F.TORQUE, buffer)
+
+
+def _rows_of(order: NDArray[np.uintp], ids: NDArray[np.uintp]) -> NDArray[np.intp]:
+    """The row of each of ``ids`` in ``order`` (KeyError for one absent)."""
+    sorter = np.argsort(order)
+    at = np.searchsorted(order, ids, sorter=sorter)
+    at = np.minimum(at, len(order) - 1)
+    rows = sorter[at] if len(order) else np.zeros(len(ids), dtype=np.intp)
+    if len(ids) and (len(order) == 0 or (order[rows] != ids).any()):
+        raise KeyError("a body is not in the space")
+    return rows.astype(np.intp)

@@ -50,7 +50,7 @@ from playground.controller.config import ControllerConfig
 from playground.controller.elementwise import ARRAYS
 from playground.controller.sensing import GroundHit, Sensed
 from playground.controller.states import AIRBORNE, GROUNDED, ControllerState, Transition
-from playground.forces.ledger import Category, ForceRows
+from playground.forces.ledger import Category, ForceRows, RowBodies
 from playground.intents import Intent
 from playground.limits import MAX_COORDINATE, RUNAWAY_FORCE
 from playground.world.schedule import Stage
@@ -218,6 +218,8 @@ class Crowd:
         self._last_ground: list[Any] = [None] * n
         self._views: list[Any] = [None] * n
         self._rows_version = -1
+        self._rows_key = b""
+        self._rows_of = RowBodies([], self._ids[:0])
         self._configs = []
         self._absorb_all()
 
@@ -427,8 +429,7 @@ class Crowd:
         block: ForceRows | None = None
         if len(rows):
             block = ForceRows(
-                [members[i].body for i in rows.tolist()],
-                self._ids[rows],
+                self._row_bodies(rows),
                 np.stack([nxt["fx"][rows], nxt["fy"][rows]], axis=1),
                 nxt["torque"][rows],
                 nxt["parts"][rows],
@@ -483,6 +484,16 @@ class Crowd:
             views[i] = nxt
             if on_ground[i]:
                 last_ground[i] = nxt  # this step's hit, built when read
+
+    def _row_bodies(self, rows: NDArray[np.intp]) -> RowBodies:
+        """The bodies of the members ``rows``: the last step's again while they are the same."""
+        key = rows.tobytes()
+        if key != self._rows_key:
+            self._rows_key = key
+            self._rows_of = RowBodies(
+                [self.members[i].body for i in rows.tolist()], self._ids[rows]
+            )
+        return self._rows_of
 
     def _regroup(self) -> None:
         configs = [c.config for c in self.members]

@@ -21,9 +21,10 @@ import pymunk
 from numpy.typing import NDArray
 
 from playground._engine import raw
+from playground._engine.batch import ForceWrites
 from playground.vec import Vec
 
-__all__ = ["Category", "ForceLedger", "ForceRows"]
+__all__ = ["Category", "ForceLedger", "ForceRows", "RowBodies"]
 
 
 class Category(Enum):
@@ -55,50 +56,72 @@ class _Entry:
         self.parts = [0.0] * _PARTS
 
 
+class RowBodies:
+    """The bodies of a block of rows, distinct, with their ids and each one's row: built once
+    while a block's bodies stay the same (a crowd's batch members, step after step)."""
+
+    __slots__ = ("bodies", "ids", "index", "writes")
+
+    def __init__(self, bodies: list[pymunk.Body], ids: NDArray[np.uintp]) -> None:
+        self.bodies = bodies
+        self.ids = ids
+        """Their ``body.id``."""
+        self.index = {b: i for i, b in enumerate(bodies)}
+        """Row of each body."""
+        self.writes = ForceWrites()
+        """Their forces written in one batch call (:meth:`ForceRows.flush`)."""
+
+
 class ForceRows:
     """The forces on a block of bodies, one row each: what :meth:`ForceLedger.add_all` would
     have summed for each (its forces added to 0.0 in order, no point, then its torque), as
-    arrays. ``bodies`` are distinct and have no entry in the ledger yet when the rows are added.
+    arrays. The bodies have no entry in the ledger yet when the rows are added.
 
     Attributes:
-        bodies: the bodies.  ids: their ``body.id``.  force: (k, 2) total force, N.
+        of: the bodies (:class:`RowBodies`).  force: (k, 2) total force, N.
         torque: (k,) torque, N·m.  parts: (k, 6) per-category sums ``[px, py, ax, ay, sx, sy]``,
         N.
     """
 
-    __slots__ = ("_handles", "active", "bodies", "force", "ids", "index", "parts", "torque")
+    __slots__ = ("active", "force", "of", "parts", "torque")
 
     def __init__(
         self,
-        bodies: list[pymunk.Body],
-        ids: NDArray[np.uintp],
+        of: RowBodies,
         force: NDArray[np.float64],
         torque: NDArray[np.float64],
         parts: NDArray[np.float64],
-        index: dict[pymunk.Body, int] | None = None,
     ) -> None:
-        self.bodies = bodies
-        self.ids = ids
+        self.of = of
         self.force = force
         self.torque = torque
         self.parts = parts
-        self.index = index if index is not None else {b: i for i, b in enumerate(bodies)}
-        """Row of each body."""
-        self._handles = [raw.handle(b) for b in bodies]
-        self.active = np.zeros(len(bodies), dtype=bool)
+        self.active = np.zeros(len(of.bodies), dtype=bool)
         """Which rows count as added already: a force added to the body of an active row adds
         to that row; the body of a row not yet active gets an entry of its own, and the row
         must be dropped (:meth:`ForceLedger.drop_row`) before the flush."""
 
     def flush(self, skip: NDArray[np.bool_] | None) -> None:
-        """Write each row's force and torque to its body (rows ``skip`` left out)."""
+        """Write each row's force and torque to its body (rows ``skip`` left out): in one batch
+        call while the space cannot sleep, else body by body."""
+        of = self.of
+        if not of.bodies:
+            return
+        space = of.bodies[0].space
+        if space is not None and space.sleep_time_threshold == math.inf:
+            if skip is None:
+                of.writes.write(space, of.ids, self.force, self.torque)
+            else:
+                keep = ~skip
+                ForceWrites().write(space, of.ids[keep], self.force[keep], self.torque[keep])
+            return
         set_force, set_torque = raw.set_force, raw.set_torque
         fx, fy = self.force[:, 0].tolist(), self.force[:, 1].tolist()
         torque = self.torque.tolist()
-        handles = self._handles
-        rows = range(len(handles)) if skip is None else np.flatnonzero(~skip).tolist()
+        bodies = of.bodies
+        rows = range(len(bodies)) if skip is None else np.flatnonzero(~skip).tolist()
         for i in rows:
-            h = handles[i]
+            h = raw.handle(bodies[i])
             set_force(h, fx[i], fy[i])
             set_torque(h, torque[i])
 
@@ -155,11 +178,11 @@ class ForceLedger:
         """Start ``entry`` from ``body``'s row, if it has one: what comes after adds to it."""
         rows = self._rows
         assert rows is not None
-        i = rows.index.get(body)
+        i = rows.of.index.get(body)
         if i is None or not rows.active[i]:
             return
         if self._folded is None:
-            self._folded = np.zeros(len(rows.bodies), dtype=bool)
+            self._folded = np.zeros(len(rows.of.bodies), dtype=bool)
         self._folded[i] = True
         entry.fx, entry.fy = rows.force[i].tolist()
         entry.torque = float(rows.torque[i])
@@ -177,7 +200,7 @@ class ForceLedger:
         """Record a block of rows (one block a step; its bodies have no entry yet). The
         caller has checked that each value is finite."""
         assert self._rows is None, "one block of rows a step"
-        if not self._entries and self._on_first is not None and len(rows.bodies):
+        if not self._entries and self._on_first is not None and len(rows.of.bodies):
             self._on_first()
         self._rows = rows
         self._folded = None
@@ -185,11 +208,11 @@ class ForceLedger:
     def drop_row(self, body: pymunk.Body) -> None:
         """Leave ``body``'s row out (its forces went in otherwise)."""
         rows = self._rows
-        i = None if rows is None else rows.index.get(body)
+        i = None if rows is None else rows.of.index.get(body)
         if rows is None or i is None:
             return
         if self._folded is None:
-            self._folded = np.zeros(len(rows.bodies), dtype=bool)
+            self._folded = np.zeros(len(rows.of.bodies), dtype=bool)
         self._folded[i] = True
 
     def row_block(self) -> tuple[NDArray[np.uintp], NDArray[np.float64]] | None:
@@ -199,9 +222,9 @@ class ForceLedger:
         if rows is None:
             return None
         if self._folded is None:
-            return rows.ids, rows.parts
+            return rows.of.ids, rows.parts
         keep = ~self._folded
-        return rows.ids[keep], rows.parts[keep]
+        return rows.of.ids[keep], rows.parts[keep]
 
     def add(
         self,
@@ -288,7 +311,7 @@ class ForceLedger:
         if rows is None:
             return len(self._entries)
         folded = 0 if self._folded is None else int(self._folded.sum())
-        return len(self._entries) + len(rows.bodies) - folded
+        return len(self._entries) + len(rows.of.bodies) - folded
 
     def parts(self, body: pymunk.Body) -> list[float] | None:
         """``body``'s per-category sums ``[px, py, ax, ay, sx, sy]`` (N), None if it has no
@@ -299,7 +322,7 @@ class ForceLedger:
             return entry.parts
         rows = self._rows
         if rows is not None:
-            i = rows.index.get(body)
+            i = rows.of.index.get(body)
             if i is not None:
                 parts: list[float] = rows.parts[i].tolist()
                 return parts

@@ -167,7 +167,7 @@ def test_a_row_adds_as_add_all_and_a_later_force_adds_to_it() -> None:
     own and is dropped; the solver's view (row_block, parts) follows."""
     import numpy as np
 
-    from playground.forces.ledger import ForceRows
+    from playground.forces.ledger import ForceRows, RowBodies
 
     a, b = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
     own = [(0.1, 0.7, Category.SUPPORT), (0.2, -0.3, Category.APPLIED)]
@@ -184,8 +184,7 @@ def test_a_row_adds_as_add_all_and_a_later_force_adds_to_it() -> None:
     fy = 0.0 + 0.7 + -0.3
     parts = np.array([[0.0, 0.0, 0.0 + 0.2, 0.0 + -0.3, 0.0 + 0.1, 0.0 + 0.7]] * 2)
     rows = ForceRows(
-        [a, b],
-        np.array([a.id, b.id], dtype=np.uintp),
+        RowBodies([a, b], np.array([a.id, b.id], dtype=np.uintp)),
         np.array([[fx, fy], [fx, fy]]),
         np.array([0.0 + 0.25, 0.0 + 0.25]),
         parts,
@@ -200,3 +199,41 @@ def test_a_row_adds_as_add_all_and_a_later_force_adds_to_it() -> None:
     a.force = b.force = (9.0, 9.0)
     ledger.flush()
     assert (tuple(a.force), a.torque, ledger.parts(a), tuple(b.force)) == expected
+
+
+def test_rows_flush_in_one_batch_call_as_body_by_body() -> None:
+    """Law: the rows of bodies in a space that cannot sleep are written in one batch call
+    (ForceWrites), with the bits the setters write body by body (a space that can sleep, or
+    none); a dropped row leaves its body to its entry, and bodies without a row keep theirs."""
+    import math
+
+    import numpy as np
+
+    from playground.forces.ledger import ForceRows, RowBodies
+
+    def flushed(sleep_time: float | None) -> list[str]:
+        space = pymunk.Space()
+        if sleep_time is not None:
+            space.sleep_time_threshold = sleep_time
+        bodies = [pymunk.Body(1.0, 1.0) for _ in range(4)]
+        space.add(*bodies)
+        if sleep_time is None:
+            space.remove(*bodies)
+        bodies[3].force, bodies[3].torque = (7.0, 8.0), 9.0
+        ledger = ForceLedger()
+        rows = ForceRows(
+            RowBodies(bodies[:3], np.array([b.id for b in bodies[:3]], dtype=np.uintp)),
+            np.array([[0.1, 0.2], [1e-17, -3.3], [5.0, 6.0]]),
+            np.array([0.3, -0.0, 2.5]),
+            np.zeros((3, 6)),
+        )
+        ledger.add_rows(rows)
+        ledger.add(bodies[2], (1.0, 1.0))  # before its row's turn: an entry of its own
+        ledger.drop_row(bodies[2])
+        ledger.flush()
+        return [repr((*b.force, b.torque)) for b in bodies]  # repr: -0.0 is not 0.0
+
+    batch = flushed(math.inf)
+    assert batch == flushed(1.0) == flushed(None)
+    assert batch[1] == repr((1e-17, -3.3, -0.0))
+    assert batch[2] == repr((1.0, 1.0, 0.0)) and batch[3] == repr((7.0, 8.0, 9.0))
