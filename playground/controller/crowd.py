@@ -31,6 +31,7 @@ step, to the last bit.
 from __future__ import annotations
 
 import math
+import operator
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -95,13 +96,19 @@ def _plain_move(intent: Intent) -> float | None:
 
 
 class _Group:
-    """Members sharing one config (equal configs: one group): their rows."""
+    """Members sharing one config (equal configs: one group): their rows, a slice where they
+    follow one another (one config for all: every row), which indexes a view, not a copy."""
 
     __slots__ = ("config", "cos_slope", "rows")
 
     def __init__(self, config: ControllerConfig, rows: list[int]) -> None:
         self.config = config
-        self.rows = np.array(rows, dtype=np.intp)
+        first, last = rows[0], rows[-1]
+        self.rows: slice | NDArray[np.intp] = (
+            slice(first, last + 1)
+            if last - first + 1 == len(rows)
+            else np.array(rows, dtype=np.intp)
+        )
         self.cos_slope = math.cos(config.max_slope)
 
 
@@ -398,8 +405,8 @@ class Crowd:
                 self.materialize(c)
         # -- deciding and acting, on arrays, per config -------------------------------------------
         handles = self._handles
-        mass = np.array(list(map(raw.mass, handles)))
-        moment = np.array(list(map(raw.moment, handles)))
+        mass = np.fromiter(map(raw.mass, handles), np.float64, n)
+        moment = np.fromiter(map(raw.moment, handles), np.float64, n)
         body = _BodyState(x, y, vx, vy, cos, sin, spin, mass, moment)
         zeros = np.zeros(n)
         frame_v = (gvx + zeros, gvy + zeros)
@@ -498,7 +505,7 @@ class Crowd:
     def _regroup(self) -> None:
         configs = [c.config for c in self.members]
         old = self._configs
-        if len(old) == len(configs) and all(a is b for a, b in zip(old, configs, strict=True)):
+        if len(old) == len(configs) and all(map(operator.is_, old, configs)):
             return
         self._configs = configs
         self._sweeps = [c.senses.sweep for c in self.members]
