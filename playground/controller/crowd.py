@@ -289,6 +289,10 @@ class Crowd:
         # -- who may go batch: intents, laws, states ---------------------------------------------
         default_laws = members[0].default_laws
         plain = self._plain
+        if len(plain) > 2 * n + 64:
+            # A source that makes a new intent every step (a keyboard) would grow the cache
+            # by its intents, each kept alive by its entry.
+            plain.clear()
         moves: list[float] = []
         for c in members:
             intent = c.intent

@@ -237,3 +237,23 @@ def test_a_crowd_walks_stairs_as_it_does_one_by_one() -> None:
         assert _readings(batch, sb) == _readings(scalar, sa), f"step {step}"
         climbed = max(climbed, *(c.body.position.y for c in sb))
     assert climbed > 1.9  # m: over the landing (top 1.0 m) at ride height, not below the flight
+
+
+def test_fresh_intents_every_step_do_not_pile_up_in_the_crowd() -> None:
+    """A source that makes a new Intent every step (as a keyboard does): the crowd's cache of
+    each intent's plain move stays bounded by its members, not by the steps run."""
+
+    class Fresh:
+        def intent(self, t: float) -> Intent:
+            return Intent(move=0.25)
+
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (80.0, 0.0))
+    for i in range(30):
+        Controller(world, f"e{i}", position=(2.0 * i, 0.95), source=Fresh())
+    crowd = Crowd.of(world)
+    for _ in range(40):
+        world.step()
+    # Cleared once past 2·30 + 64 entries, then one step adds at most 30 (without the bound:
+    # 40 × 30 = 1 200).
+    assert crowd.active and 0 < len(crowd._plain) <= 3 * 30 + 64
