@@ -42,7 +42,7 @@ from numpy.typing import NDArray
 from playground._engine import raw
 from playground._engine.batch import Poses, touching_ids
 from playground._engine.state import BodyState, body_motion, space_gravity
-from playground._engine.sweep import nearest_each
+from playground._engine.sweep import nearest_each, sharp
 from playground.controller import laws as law
 from playground.controller import stairs
 from playground.controller._vec import ZERO, unit_or
@@ -73,6 +73,8 @@ STATIC = pymunk.Body.STATIC
 _CODES = {GROUNDED: 1, AIRBORNE: 2}
 _STATES = (None, GROUNDED, AIRBORNE)
 _RUNAWAY_TORQUE = RUNAWAY_FORCE * MAX_COORDINATE
+_COS_CORNER_TILT = math.cos(stairs.CORNER_TILT)
+_COS_TREAD_PARALLEL = math.cos(stairs.TREAD_PARALLEL)
 
 # The laws and the values they read, called on arrays (typed for floats, written for both).
 _law: Any = law
@@ -110,6 +112,25 @@ class _Group:
             else np.array(rows, dtype=np.intp)
         )
         self.cos_slope = math.cos(config.max_slope)
+
+
+class _StairsArrays:
+    """Each member's lengths of :mod:`~playground.controller.stairs` (m), its hover frequency
+    (Hz) and the cosine of its steepest walkable slope, as arrays, for the tread ahead of many
+    members at once."""
+
+    __slots__ = (
+        "clearance", "cos_slope", "hover_frequency", "radius", "reach", "rho", "ride_height",
+    )  # fmt: skip
+
+    def __init__(self, configs: list[ControllerConfig]) -> None:
+        self.radius = np.array([c.radius for c in configs])
+        self.ride_height = np.array([c.ride_height for c in configs])
+        self.rho = np.array([c.probe_radius for c in configs])
+        self.reach = np.array([c.ride_height - c.half_length for c in configs])
+        self.clearance = np.array([c.ride_height - 0.5 * c.height for c in configs])
+        self.hover_frequency = np.array([c.hover_frequency for c in configs])
+        self.cos_slope = np.array([math.cos(c.max_slope) for c in configs])
 
 
 class Crowd:
@@ -340,7 +361,7 @@ class Crowd:
         # Each probe is one C query with its Python callback (a query is not batched), all of
         # them in one call.
         ground: list[pymunk.Body | None] = [None] * n
-        motions: dict[pymunk.Shape, tuple[pymunk.Body | None, int, float, float, float]] = {}
+        motions: dict[pymunk.Shape, tuple[pymunk.Body | None, int, float, float, float, bool]] = {}
         probing = np.flatnonzero(ok)
         ends_x = x - ux * self._probe_length
         ends_y = y - uy * self._probe_length
@@ -354,8 +375,9 @@ class Crowd:
             self._probe_radius[probing].tolist(),
         )
         xs, ys, uxs, uys = x.tolist(), y.tolist(), ux.tolist(), uy.tolist()
-        vxs, vys, held, moving = vx.tolist(), vy.tolist(), grounded_before.tolist(), move.tolist()
+        held = grounded_before.tolist()
         configs = self._configs
+        cos_slope = self._stairs.cos_slope.tolist()
         at: list[int] = []
         found_rows: list[tuple[float, float, float, float, float, float, float]] = []
         for i, found in zip(probing.tolist(), found_at, strict=True):
@@ -369,28 +391,28 @@ class Crowd:
             if seen is None:
                 b = shape.body
                 seen = motions[shape] = (
-                    (b, *body_motion(b)) if b is not None else (None, 0, 0, 0, 0)
+                    (b, *body_motion(b), sharp(shape))
+                    if b is not None
+                    else (None, 0, 0.0, 0.0, 0.0, False)
                 )
-            b, kind, bvx, bvy, w = seen
+            b, kind, bvx, bvy, w, corners = seen
             if b is None:
                 continue
             if kind != STATIC or w != 0.0:
                 ok[i] = False
                 continue
             # On stairs its own step's probe reads another ground: a corner's face, a tread to
-            # step down to (grounded over unwalkable ground), a tread ahead to step up onto.
-            m = moving[i]
-            px, py, qx, qy = xs[i], ys[i], uxs[i], uys[i]
-            cfg, sweep, radius = configs[i], sweeps[i], configs[i].probe_radius
+            # step down to (grounded over unwalkable ground), a tread ahead to step up onto
+            # (for the walking ones, after this loop: _may_step_up). stairs.face and
+            # stairs.walkable's own tests first, the same float operations: most members
+            # stand on a face, square to up.
+            qx, qy = uxs[i], uys[i]
+            along = fnx * qx + fny * qy
             if (
-                stairs.face(found, px, py, qx, qy, radius) is not found
-                or (held[i] and not stairs.walkable(found, qx, qy, cfg))
-                or (
-                    m != 0.0
-                    and stairs.step_up(sweep, found, px, py, vxs[i], vys[i], qx, qy, m, cfg)
-                    is not None
-                )
-            ):
+                along < _COS_CORNER_TILT
+                and corners
+                and stairs.face(found, xs[i], ys[i], qx, qy, configs[i].probe_radius) is not found
+            ) or (held[i] and not along >= cos_slope[i]):
                 ok[i] = False
                 continue
             ground[i] = b
@@ -402,6 +424,9 @@ class Crowd:
             hit[at] = True
             cols[:, at] = np.array(found_rows, dtype=np.float64).T
         hx, hy, nx, ny, gvx, gvy, gw = cols
+        walking = ok & hit & (move != 0.0)
+        if walking.any():
+            ok &= ~self._may_step_up(walking, x, y, vx - gvx, vy - gvy, ux, uy, move, cols)
         # -- the scalar members first get their readings from the arrays of the last step -------
         for i in np.flatnonzero(~ok).tolist():
             c = members[i]
@@ -515,10 +540,73 @@ class Crowd:
         self._sweeps = [c.senses.sweep for c in self.members]
         self._probe_length = np.array([cfg.probe_length for cfg in configs])
         self._probe_radius = np.array([cfg.probe_radius for cfg in configs])
+        self._stairs = _StairsArrays(configs)
         by: dict[ControllerConfig, list[int]] = {}
         for i, cfg in enumerate(configs):
             by.setdefault(cfg, []).append(i)
         self._groups = [_Group(cfg, rows) for cfg, rows in by.items()]
+
+    def _may_step_up(
+        self,
+        walking: NDArray[np.bool_],
+        px: NDArray[np.float64],
+        py: NDArray[np.float64],
+        rvx: NDArray[np.float64],
+        rvy: NDArray[np.float64],
+        ux: NDArray[np.float64],
+        uy: NDArray[np.float64],
+        move: NDArray[np.float64],
+        ground: NDArray[np.float64],
+    ) -> NDArray[np.bool_]:
+        """Which ``walking`` members (their probe found a walkable static ground, its hit point
+        and normal in ``ground``'s first four rows; (rvx, rvy) their velocity relative to it,
+        m/s) may find a tread ahead to step up onto (:func:`~playground.controller.stairs.
+        step_up` not None): their own step runs. The ray and the tests are those of
+        :func:`~playground.controller.stairs.ahead`, the same float operations on arrays, and
+        the rays are cast in one call; a tread on a one-way platform counts as found (the
+        platform may let the ray pass)."""
+        k = self._stairs
+        hx, hy, nx, ny = ground[0], ground[1], ground[2], ground[3]
+        walk = walking & (nx * ux + ny * uy >= k.cos_slope)
+        direction = np.where(move > 0.0, 1.0, -1.0)
+        speed = direction * ((rvx * ny) - (rvy * nx))
+        tx, ty = direction * ny, -direction * nx
+        d = k.radius + k.rho + ARRAYS.max(0.0, speed) * 0.5 / k.hover_frequency
+        fx, fy = px - nx * k.ride_height, py - ny * k.ride_height
+        ax, ay = fx + tx * d + nx * k.reach, fy + ty * d + ny * k.reach
+        depth = (ax - hx) * nx + (ay - hy) * ny - k.clearance
+        bx, by = ax - nx * depth, ay - ny * depth
+        rows = np.flatnonzero(walk & (depth > 0.0))
+        may = np.zeros(len(walking), dtype=bool)
+        if not len(rows):
+            return may
+        sweeps = self._sweeps
+        zeros = [0.0] * len(rows)
+        treads = nearest_each(
+            [sweeps[i] for i in rows.tolist()],
+            ax[rows].tolist(),
+            ay[rows].tolist(),
+            bx[rows].tolist(),
+            by[rows].tolist(),
+            zeros,
+        )
+        at = [i for i, t in zip(rows.tolist(), treads, strict=True) if t is not None]
+        if not at:
+            return may
+        found = [t for t in treads if t is not None]
+        shapes = {t[0] for t in found}
+        no_body = {s: s.body is None for s in shapes}
+        r = np.array(at, dtype=np.intp)
+        sx, sy, mx, my = np.array([t[1:] for t in found], dtype=np.float64).T
+        hx, hy, nx, ny = hx[r], hy[r], nx[r], ny[r]
+        no_step = (
+            ((sx == bx[r]) & (sy == by[r]))
+            | ((sx - hx) * nx + (sy - hy) * ny <= k.clearance[r])
+            | (mx * nx + my * ny < _COS_TREAD_PARALLEL)
+            | np.array([no_body[t[0]] for t in found], dtype=bool)
+        )
+        may[r] = ~no_step
+        return may
 
     def _tracked_rows(self, world: World) -> NDArray[np.intp]:
         if world.tracked_version != self._rows_version:
