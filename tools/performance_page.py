@@ -84,6 +84,6 @@ orientation only.
 
 ## The goals
 
-{goals_markdown(judge(m.levels, m.piles))}
+{goals_markdown(judge(m.levels, m.piles, m.crowds))}
 
 {summary_markdown(m)}{tail}"""

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from playground.bench.measurement import LevelRow, PileRow
+from playground.bench.measurement import CrowdRow, LevelRow, PileRow
 from tools.goals import GOALS, judge
 
 
@@ -28,7 +28,12 @@ def test_goals_judge_the_worst_case_each_covers() -> None:
         PileRow("field", 1000, 1040.0, 1000.0, 1.04, 1.0, 1.1, 0.04),
         PileRow("no effect", 10, 11.0, 10.0, 1.1, 1.0, 1.2, 0.1),
     ]
-    goals = {g.key: g for g in judge(levels, piles)}
+    crowds = [
+        CrowdRow(10, 200.0, 5.0, 40.0, 38.0, 42.0, 20.0, 41.7, "scalar"),
+        CrowdRow(100, 500.0, 50.0, 10.0, 9.0, 11.0, 5.0, 16.7, "batch"),
+        CrowdRow(200, 700.0, 50.0, 14.0, 13.0, 15.0, 3.5, 11.9, "batch"),
+    ]
+    goals = {g.key: g for g in judge(levels, piles, crowds)}
     assert set(goals) == {g.key for g in GOALS}
     assert goals["one_player_us"].value == 30.0
     assert not goals["one_player_us"].met
@@ -42,3 +47,9 @@ def test_goals_judge_the_worst_case_each_covers() -> None:
     assert goals["split_10"].met and goals["split_1000"].met  # overheads 3.5× and 0.4×
     assert goals["field_1000"].met
     assert not goals["no_effect"].met
+    # The crowd of 10 is not one the goals cover: the worst per actor is the crowd of 100's.
+    assert goals["crowd_per_actor"].value == 5.0 and not goals["crowd_per_actor"].met
+    assert goals["crowd_engine"].met and goals["crowd_rt"].met
+    assert {g.key for g in judge(levels, piles)} == {g.key for g in GOALS} - {
+        "crowd_per_actor", "crowd_engine", "crowd_rt",
+    }  # fmt: skip
