@@ -1,10 +1,10 @@
 """A body's state and the space's gravity read through Chipmunk's C getters in one call, as
 plain floats: what a controller needs of its own body (:func:`body_state`), of the ground under
-it (:func:`body_motion`, :func:`centre_of_gravity`) and of the space (:func:`space_gravity`),
-without a pymunk property's ``Vec2d``.
+it (:func:`body_motion`, :func:`centre_of_gravity`, :func:`radius_of_gyration`, :func:`jointed`)
+and of the space (:func:`space_gravity`), without a pymunk property's ``Vec2d``.
 
 Each function reads the very doubles pymunk's properties read (``tests/_engine/test_state.py``
-compares them bit for bit).
+compares them, and what it computes from them, bit for bit).
 
 >>> import pymunk
 >>> body = pymunk.Body(2.0, 1.0)
@@ -16,6 +16,7 @@ compares them bit for bit).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import pymunk
@@ -24,7 +25,15 @@ from pymunk._chipmunk_cffi import lib
 from playground._engine import raw
 from playground.vec import Vec
 
-__all__ = ["BodyState", "body_motion", "body_state", "centre_of_gravity", "space_gravity"]
+__all__ = [
+    "BodyState",
+    "body_motion",
+    "body_state",
+    "centre_of_gravity",
+    "jointed",
+    "radius_of_gyration",
+    "space_gravity",
+]
 
 
 @dataclass(slots=True)
@@ -79,6 +88,26 @@ def body_motion(body: pymunk.Body) -> tuple[int, float, float, float]:
     h = body._body
     v = _velocity(h)
     return _body_type(h), v.x, v.y, _angular_velocity(h)
+
+
+def radius_of_gyration(body: pymunk.Body) -> float:
+    """A dynamic body's radius of gyration √(I/m), m: how far from its centre of gravity its
+    whole mass would have its moment of inertia (a slab w wide and h thick: √((w² + h²)/12)).
+
+    >>> round(radius_of_gyration(pymunk.Body(3.0, 3.0 * (0.25**2 + 0.05**2) / 12.0)), 4)
+    0.0736
+    """
+    h = body._body
+    return math.sqrt(_moment(h) / _mass(h))
+
+
+def jointed(body: pymunk.Body) -> bool:
+    """Whether a joint (a pymunk constraint) holds the body to another one.
+
+    >>> jointed(pymunk.Body(1.0, 1.0))
+    False
+    """
+    return bool(body.constraints)
 
 
 def centre_of_gravity(body: pymunk.Body) -> Vec:

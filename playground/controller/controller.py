@@ -76,9 +76,12 @@ class Controller:
       constant ``drive_time``, plus the tangential part of the gravity felt in the ground's frame
       (so slopes hold and an accelerating platform carries it without lag), bounded by
       ``ground_force`` and by ``traction × hover force``.
-    - **balance**: a PD torque toward up, bounded by ``balance_torque``. Needing more than the
-      budget for ``balance_loss_time`` while supported loses balance (hover, drive and balance let
-      go); once still for ``settle_time`` it gets up over ``getup_time``.
+    - **balance**: a PD torque toward up, bounded by ``balance_torque``, and through a loose
+      dynamic ground by what the load on it holds down (the hover's force times
+      :func:`~playground.controller.sensing.footing`: past it a tile tips under the feet).
+      Needing more than the budget for ``balance_loss_time`` while supported loses balance
+      (hover, drive and balance let go); once still for ``settle_time`` it gets up over
+      ``getup_time``.
     - **jump**, **grab/hang/climb**, **push**, **gravity switches**: see the config.
     - **ledge**: grabbing next to a ledge (a walkable top within ``ledge_grab`` above the
       head) holds its edge with the grip joint on the ledge's own body; a climb up lets go of

@@ -20,6 +20,8 @@ from playground._engine.state import (
     body_motion,
     body_state,
     centre_of_gravity,
+    jointed,
+    radius_of_gyration,
     space_gravity,
 )
 from playground._engine.sweep import Sweep, nearest_where
@@ -46,7 +48,7 @@ from playground.world.world import World
 KINEMATIC = pymunk.Body.KINEMATIC
 DYNAMIC = pymunk.Body.DYNAMIC
 
-__all__ = ["GroundHit", "PushTarget", "Sensed", "Senses", "height", "up_speed"]
+__all__ = ["GroundHit", "PushTarget", "Sensed", "Senses", "footing", "height", "up_speed"]
 
 GroundMotion = tuple[pymunk.Body, float, float, float]
 """A kinematic ground as the probe read it: the body, its velocity (m/s) and spin (rad/s)."""
@@ -87,6 +89,10 @@ class GroundHit:
             our spin relative to it.
         dynamic: the body hit is dynamic, so it takes our reactions (the world drops forces on
             static and kinematic bodies).
+        lever: how far the feet's centre of pressure may move off the hit point before a loose
+            ground tips, m (:func:`footing`): the balance torque through it is at most the
+            hover's force times this (:func:`~playground.controller.action.act`); infinite on a
+            static, kinematic or jointed ground.
     """
 
     body: pymunk.Body
@@ -99,6 +105,7 @@ class GroundHit:
     own_acceleration: Vec
     spin: float
     dynamic: bool
+    lever: float = math.inf
 
 
 @dataclass(slots=True)
@@ -166,6 +173,31 @@ class Sensed:
     engine: Vec = ZERO
     push_target: PushTarget | None = None
     ledge: LedgeHold | None = None
+
+
+def footing(ground: pymunk.Body, x: float, y: float, nx: float, ny: float) -> float:
+    """How far the feet's centre of pressure may move off the point (``x``, ``y``) (m) on a
+    dynamic ``ground`` whose surface normal there is (``nx``, ``ny``) before the ground tips, m.
+
+    A loose body (a tile, a stone, a crate) holds a torque only as far as the load pressing it
+    keeps it down: a load N at a distance a from the edge it would tip over holds at most N·a,
+    and beyond that the body flips under the feet. The body's extent is taken from its mass
+    and moment: its radius of gyration √(I/m) stands for the half-width of its base (w/√12 for a
+    slab w wide, a margin of √3 under w/2), less the point's offset from its centre of gravity
+    along the surface, and 0 past it. A jointed body passes the torque on to its joint
+    (a seesaw's plank to its pivot): infinite.
+
+    >>> tile = pymunk.Body(3.0, 3.0 * (0.25**2 + 0.04**2) / 12.0)     # kg, kg·m²: 25 × 4 cm
+    >>> round(footing(tile, 0.0, 0.02, 0.0, 1.0), 4), round(footing(tile, 0.05, 0.02, 0.0, 1.0), 4)
+    (0.0731, 0.0231)
+    >>> footing(tile, 0.1, 0.02, 0.0, 1.0)                              # past it: none
+    0.0
+    """
+    if jointed(ground):
+        return math.inf
+    cx, cy = centre_of_gravity(ground)
+    offset = abs((x - cx) * ny - (y - cy) * nx)
+    return max(0.0, radius_of_gyration(ground) - offset)
 
 
 def up_speed(sensed: Sensed, ground: GroundHit | None) -> float:
@@ -421,9 +453,11 @@ class Senses:
             (sin_t * rx + cos_t * ry - ry) / dt + own_y,
         )
         # Positionally, in the order of the fields (as Sensed, for speed).
+        dynamic = kind == DYNAMIC
+        lever = footing(ground, hx, hy, nx, ny) if dynamic else math.inf
         hit = GroundHit(
             ground, (hx, hy), (nx, ny), distance, walkable, frame_velocity, frame_acceleration,
-            (own_x, own_y), w, kind == DYNAMIC,
+            (own_x, own_y), w, dynamic, lever,
         )  # fmt: skip
         return hit, motion
 

@@ -17,6 +17,7 @@ import pymunk
 
 from playground import movers as movers_mod
 from playground.controller import ledge as ledge_mod
+from playground.controller import sensing as sensing_mod
 from playground.controller import stairs as stairs_mod
 from playground.controller import switches
 from playground.controller._vec import ZERO
@@ -166,6 +167,15 @@ def _balance_absolute_spin() -> Iterator[None]:
     """The balance damps the body's absolute spin instead of its spin relative to the ground:
     on a turning floor (inside a spinning ring) the capsule lags behind its up."""
     with controller_laws(balance=argument_changed(Laws, "hit", lambda hit: None)):
+        yield
+
+
+@register("footing_unbounded")
+def _footing_unbounded() -> Iterator[None]:
+    """The balance torque through a loose ground is no longer held to what the load on it holds
+    down: stepping onto a loose tile near its edge, the feet flip it and it spins away under
+    them."""
+    with replaced(sensing_mod, "footing", lambda _: lambda *a, **k: math.inf):
         yield
 
 

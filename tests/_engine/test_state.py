@@ -3,6 +3,7 @@ properties give (bit for bit), so the controller's reads cannot drift from the p
 
 from __future__ import annotations
 
+import math
 import struct
 
 import pymunk
@@ -10,7 +11,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from playground._engine.state import body_motion, body_state, centre_of_gravity, space_gravity
+from playground._engine.state import (
+    body_motion,
+    body_state,
+    centre_of_gravity,
+    jointed,
+    radius_of_gyration,
+    space_gravity,
+)
 
 _FINITE = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False)
 UNTIMED = settings(deadline=None)
@@ -69,3 +77,19 @@ def test_body_motion_and_centre_are_the_properties_bit_for_bit(
     assert _bits((mvx, mvy, spin)) == _bits((*body.velocity, body.angular_velocity))
     expected = body.local_to_world(body.center_of_gravity)
     assert _bits(centre_of_gravity(body)) == _bits(tuple(expected))
+
+
+@UNTIMED
+@given(st.floats(min_value=1e-3, max_value=1e6), st.floats(min_value=1e-6, max_value=1e9))
+def test_radius_of_gyration_is_the_properties_root_bit_for_bit(mass: float, moment: float) -> None:
+    """√(I/m) of the body's own mass and moment, to the last bit."""
+    body = pymunk.Body(mass, moment)
+    assert _bits((radius_of_gyration(body),)) == _bits((math.sqrt(body.moment / body.mass),))
+
+
+def test_a_body_is_jointed_while_a_constraint_holds_it() -> None:
+    """A pivot to another body makes both jointed (pymunk's ``Body.constraints``)."""
+    a, b = pymunk.Body(1.0, 1.0), pymunk.Body(1.0, 1.0)
+    assert not jointed(a) and not jointed(b)
+    joint = pymunk.PivotJoint(a, b, (0.0, 0.0))
+    assert jointed(a) and jointed(b) and a.constraints == {joint}

@@ -131,6 +131,42 @@ def test_the_probe_says_whether_the_ground_takes_reactions(kind: int, dynamic: b
     assert player.probe.dynamic is dynamic
 
 
+TILE = (0.25, 0.04)
+"""m: a loose tile's length and thickness."""
+TILE_MASS = 3.0
+"""kg."""
+
+
+def _on_a_tile(offset: float, *, jointed: bool = False) -> Controller:
+    """A player standing ``offset`` m to the right of a loose tile's centre (its probe's axis
+    there), the tile lying on a floor (held by a pivot to the static body if ``jointed``)."""
+    world = World()
+    world.add_static_segment((-5.0, -0.05), (5.0, -0.05), radius=0.05)
+    tile = world.add_box("tile", mass=TILE_MASS, size=TILE, position=(0.0, TILE[1] / 2.0))
+    if jointed:
+        world.space.add(pymunk.PivotJoint(tile, world.space.static_body, (0.0, TILE[1] / 2.0)))
+    player = Controller(world, "player", position=(offset, TILE[1] + 0.95))
+    world.step()
+    return player
+
+
+def test_the_probe_reads_how_far_a_loose_ground_holds_the_feet_off_centre() -> None:
+    """Law (sensing.footing): on a loose tile the lever is its radius of gyration √(I/m) less
+    the hit's offset from its centre along its top, 0 past it; a jointed tile and the static
+    floor hold any torque (infinite)."""
+    gyration = math.sqrt((TILE[0] ** 2 + TILE[1] ** 2) / 12.0)
+    for offset in (0.0, 0.05):
+        probe = _on_a_tile(offset).probe
+        assert probe is not None and probe.dynamic
+        assert probe.lever == pytest.approx(gyration - offset, abs=1e-12)
+    off_centre = _on_a_tile(0.1).probe
+    assert off_centre is not None and off_centre.dynamic and off_centre.lever == 0.0
+    held = _on_a_tile(0.05, jointed=True).probe
+    assert held is not None and held.dynamic and held.lever == math.inf
+    floor = _on_a_tile(1.0).probe
+    assert floor is not None and not floor.dynamic and floor.lever == math.inf
+
+
 def test_the_probe_reads_the_spin_of_a_turning_ground() -> None:
     """Law: the hit's ``spin`` is the ground's angular velocity (the balance damps ours relative
     to it), here a slab turning slowly under the player."""
