@@ -177,7 +177,7 @@ def spinning_ring(config: WorldConfig) -> Hard:
     world = World(config)
     ring = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
     # Walls 0.6 m thick: with ring_room's default (0.2 m thick), 7 g pushes a crate through the
-    # wall at 1/30 s (the stability chapter measures when) — a limit worth knowing.
+    # wall at 1/40 s (the stability chapter measures when) — a limit worth knowing.
     world.add("ring", ring, *ring_room(ring, 5.0, segments=64, thickness=RING_WALL))
     world.add_mover("ring", Spin(rate=6.0))
     player = Controller(world, "player", position=(0.0, -3.5))

@@ -149,7 +149,7 @@ THIN_WALL = 0.1
 """m: ring_room's default half thickness of the wall (0.2 m thick), which the hard spinning ring
 replaces by 0.3 m (0.6 m thick)."""
 
-THIN_WALL_DT = 1 / 30
+THIN_WALL_DT = 1 / 40
 """s: the step at which chapter 10 runs the hard spinning ring with the default wall."""
 
 

@@ -7,7 +7,7 @@ from tools.figures import ch10_stability as ch10
 
 
 def test_chapter_10_guards_removed_are_caught() -> None:
-    """Chapter 10: with ring_room's default wall the hard ring loses a body at 1/30 s (the
+    """Chapter 10: with ring_room's default wall the hard ring loses a body at 1/40 s (the
     containment check catches it), and without the runtime guard a runaway body goes on far past
     where the guard stops the world."""
     assert ch10.thin_ring_outcome().broke == "contained"
