@@ -490,3 +490,48 @@ def test_walking_on_a_free_plank_keeps_the_momentum(mass: float, dt: float, subs
     assert plank.velocity.x < 0.0
     momentum = mass * player.body.velocity.x + PLANK_MASS * plank.velocity.x
     assert abs(momentum) <= TOL_MOMENTUM * mass * CONFIG.max_speed
+
+
+TOL_SAG_REL = 1e-6
+"""Relative: a loaded hover's settled sag against L·(1 + c·dt/m)/k (measured ≤ 5.3e-11 after
+LOADED_SETTLE over 150 random masses, steps and substeps)."""
+OVERLAP = 0.002
+"""m: the crate starts this far into the head, within the world's 5 mm contact slop (which
+pymunk never pushes apart): started at exactly zero overlap it stays there, and one rounding
+ulp of gap loses the contact for a step (measured: a one-step fall at 2.97 s, 17 kg at
+dt = 1/32 s)."""
+LOADED_SETTLE = 5.0
+"""s: the crate's mass rides on a spring damped for the player's alone, which settles more
+slowly than SETTLE allows (1.7e-5 of the sag left at 3 s, 2.8e-8 at 4 s, measured)."""
+
+
+@WORLDS
+@given(
+    mass=MASS,
+    dt=DT,
+    substeps=SUBSTEPS,
+    share=st.floats(min_value=0.1, max_value=1.0),
+)
+def test_a_steady_load_sags_the_hover_by_the_load_over_its_static_stiffness(
+    mass: float, dt: float, substeps: int, share: float
+) -> None:
+    """Law (hover under a steady load): a crate of weight L resting on the head sags the hover
+    by L·(1 + c·dt/m)/k at any mass, step and substeps — the spring's k = m(2πf)², softened by
+    the implicit damper's 1 + c·dt/m (c = 2ζ·m·2πf: it acts on the velocity after the step,
+    which a body held still never reaches). crusher's weak player is checked by it."""
+    omega = TWO_PI * CONFIG.hover_frequency
+    k = mass * omega * omega
+    b = 2.0 * CONFIG.hover_damping * omega * dt  # c·dt/m
+    clearance = RIDE - CONFIG.height / 2.0  # m: the feet's gap over the floor at ride height
+    # N: the capsule never bottoms out, and the load stays far below the crush threshold.
+    load = share * min(0.8 * clearance * k / (1.0 + b), 0.5 * CONFIG.crush_threshold(mass))
+    world = flat(dt, substeps)
+    player = Controller(world, "player", (0.0, RIDE), ControllerConfig(mass=mass))
+    crate = pymunk.Body(load / G0, math.inf)  # it cannot turn, so it rests on the round head
+    crate.position = (0.0, RIDE + CONFIG.height / 2.0 + 0.25 - OVERLAP)
+    world.add("crate", crate, pymunk.Poly.create_box(crate, (0.6, 0.5)))
+    world.run(LOADED_SETTLE)
+    assert player.state is State.GROUNDED
+    sag = RIDE - player.body.position.y
+    expected = load * (1.0 + b) / k
+    assert abs(sag - expected) <= TOL_SAG_REL * expected
