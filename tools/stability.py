@@ -321,7 +321,11 @@ def check_budgets(c: Controller, where: str, step: int = 0) -> None:
     hover = math.hypot(*f.hover)
     _budget(hover <= cfg.hover_budget(m) * slack, step, f"{where}: hover {hover} N")
     drive = math.hypot(*f.drive)
-    limit = max(cfg.ground_budget(m), cfg.air_budget(m)) * slack
+    # On the ground the legs' budget comes on top of holding the slope: gravity's pull along it.
+    hit = c.sensed.ground
+    gx, gy = c.sensed.gravity
+    hold = 0.0 if hit is None else m * abs(gx * hit.normal[1] - gy * hit.normal[0])
+    limit = max(cfg.ground_budget(m) + hold, cfg.air_budget(m)) * slack
     _budget(drive <= limit, step, f"{where}: drive {drive} N")
     torque = abs(f.balance_torque)
     budget = cfg.balance_budget(m) * slack

@@ -101,9 +101,29 @@ def drive(
     config: ControllerConfig,
     ops: Ops = FLOATS,
 ) -> Vec:
-    """Drive along the ground tangent toward ground velocity + ``move``·max_speed, within
-    ``ground_force`` and traction × ``hover`` (the hover's force, N): the force, N (the
-    :data:`~playground.controller._vec.ZERO` vector itself when there is none)."""
+    """Drive along the ground tangent toward ground velocity + ``move``·max_speed: the force,
+    N (the :data:`~playground.controller._vec.ZERO` vector itself when there is none).
+
+    Two bounds, as a foot's: the legs' effort, ``ground_force``, is what they add to holding
+    the slope (gravity's pull along the ground, −m·g·t, which the sole holds by friction, as a
+    crate on a slope is held at no cost), so it lies within that hold ± ``ground_force``; and
+    the whole of it within the friction, traction × ``hover`` (the hover's force, N, the
+    normal force). On flat ground the hold is 0 and the effort is the whole drive; up a slope
+    the legs keep their whole budget for the walk, and a slope steeper than atan(traction)
+    wins against any effort.
+
+    >>> import math
+    >>> from playground.controller.sensing import Sensed, GroundHit
+    >>> from playground._engine.state import BodyState
+    >>> c, s = math.cos(math.radians(45.0)), math.sin(math.radians(45.0))   # a 45° slope
+    >>> hit = GroundHit(None, (0.0, 0.0), (-s, c), 0.95, True, (0.0, 0.0), (0.0, 0.0),
+    ...                 (0.0, 0.0), 0.0, False)
+    >>> still = Sensed(BodyState(0.0, 0.95, 0.0, 0.0, 1.0, 0.0, 0.0, 70.0, 1.0), (0.0, 1.0),
+    ...                dt=1 / 120, gravity=(0.0, -9.81))
+    >>> f = drive(still, hit, 0.0, 70.0 * 9.81 * c, ControllerConfig())   # standing, no move
+    >>> round(math.hypot(*f), 1), round(70.0 * 9.81 * s, 1)               # N: holds m·g·sinθ
+    (485.6, 485.6)
+    """
     nx, ny = hit.normal
     tx, ty = ny, -nx  # the surface tangent: its normal rotated by −90°
     body = sensed.body
@@ -119,8 +139,12 @@ def drive(
     accel = (move * config.max_speed - v_t) / max(config.drive_time, sensed.dt) - (
         (gx - ax) * tx + (gy - ay) * ty
     )
-    budget = ops.min(config.ground_budget(body.mass), config.traction * hover)
-    f = ops.max(-budget, ops.min(budget, body.mass * accel))
+    m = body.mass
+    hold = -m * (gx * tx + gy * ty)  # 0 on flat ground: the bounds are ±ground_force there
+    effort = config.ground_budget(m)
+    grip = config.traction * hover
+    f = ops.max(hold - effort, ops.min(hold + effort, m * accel))
+    f = ops.max(-grip, ops.min(grip, f))
     return ops.vector(f, tx, ty)  # type: ignore[no-any-return]
 
 

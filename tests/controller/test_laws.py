@@ -608,14 +608,21 @@ def test_a_weightless_body_gets_no_hover() -> None:
 def test_the_drive_acts_along_the_ground_within_budget_and_traction(
     vx: float, move: float, hover: float, slope: float
 ) -> None:
-    """Law: the drive lies along the ground's tangent and within min(ground_force,
-    traction × hover); with no hover it is the ZERO vector itself (no traction)."""
+    """Law: the drive lies along the ground's tangent, within traction × hover (friction) and
+    within ground_force of holding the slope (m·g·sinθ up it: the legs' effort is what they
+    add to that); with no hover it is the ZERO vector itself (no traction)."""
     hit = ground(normal_angle=slope)
     f = laws.drive(sensed(body_state(vx=vx), hit), hit, move, hover, CONFIG)
-    budget = min(CONFIG.ground_budget(M), CONFIG.traction * hover)
-    assert math.hypot(*f) <= budget * (1.0 + TOL_LAW_REL)
     nx, ny = hit.normal
-    assert abs(f[0] * nx + f[1] * ny) <= TOL_LAW_REL * max(1.0, budget)
+    along = f[0] * ny - f[1] * nx  # along the tangent (ny, −nx), N
+    hold = M * G * math.sin(slope)  # gravity's pull down the slope, held
+    grip = CONFIG.traction * hover
+    effort = CONFIG.ground_budget(M)
+    tol = TOL_LAW_REL * max(1.0, grip, effort + abs(hold))
+    assert abs(along) <= grip + tol
+    # Friction first: where the two bounds do not meet, the sole slips (at ±grip).
+    assert min(grip, hold - effort) - tol <= along <= max(-grip, hold + effort) + tol
+    assert abs(f[0] * nx + f[1] * ny) <= tol
     if hover == 0.0:
         assert f is ZERO
 
