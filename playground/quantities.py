@@ -125,6 +125,13 @@ _TABLE = (
         "the body's spin, counter-clockwise",
     ),
     Quantity("tilt", "rad", "scalar", "scene", "angle between the body's axis and its up, 0..π"),
+    Quantity(
+        "up",
+        "",
+        "vector",
+        "scene",
+        "the body's up (unit): its controller's, else its perceived one",
+    ),
     _force("engine", "the engine's total force on the body (contacts and joints)"),
     _force("contact", "the contacts' force", split=True),
     _force("contact_normal", "the contacts' normal force", recorded=False, split=True),

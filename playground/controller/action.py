@@ -25,6 +25,7 @@ from playground.controller.states import (
     GETTING_UP,
     GROUNDED,
     OFF_BALANCE,
+    SLIDING,
     ControllerState,
 )
 from playground.forces.ledger import Category
@@ -100,12 +101,13 @@ def act(
 ) -> ControllerForces:
     """The forces of the state just decided (none while off balance), through ``laws``.
 
-    Hover and drive act while grounded, getting up or crushed (the drive not while crushed),
-    on walkable ground; air steering while airborne; the climb onto a ledge while climbing (its
-    reaction on a dynamic ledge at the edge); the take-off's impulse as a force over the step;
-    the push; the balance torque unless the capsule's rotation is locked. Only a dynamic
-    ground (or ledge) takes reactions (the world drops forces on static and kinematic bodies),
-    as SUPPORT forces because they stand in for a contact on both sides.
+    Hover and drive act while grounded, getting up or crushed (the drive not while crushed), on
+    walkable ground; the slide's hover alone on ground too steep to stand on; air steering
+    while airborne; the climb onto a ledge while climbing (its reaction on a dynamic ledge at
+    the edge); the take-off's impulse as a force over the step; the push; the balance torque
+    unless the capsule's rotation is locked. Only a dynamic ground (or ledge) takes reactions
+    (the world drops forces on static and kinematic bodies), as SUPPORT forces because they
+    stand in for a contact on both sides.
     """
     # The take-off step still carries the weight: the forces follow the state it leaves.
     footing = state.footing
@@ -121,8 +123,16 @@ def act(
     reactions: Forces = []
     take_off: tuple[GroundHit, Vec] | None = None
     pushed: tuple[pymunk.Body, Vec, Vec] | None = None
-    grounded = footing in (GROUNDED, GETTING_UP, CRUSHED)
+    grounded = footing in (GROUNDED, GETTING_UP, CRUSHED, SLIDING)
     reacting = grounded and hit is not None and hit.dynamic
+    # On ground it may not stand on: sliding, or about to (GROUNDED until footing_time; within
+    # SLOPE_BAND of max_slope it still stands, decide said so).
+    slipping = (
+        hit is not None
+        and not hit.walkable
+        and (footing is SLIDING or (footing is GROUNDED and state.footing_lost > 0.0))
+        and hit.normal[0] * sensed.level[0] + hit.normal[1] * sensed.level[1] > 0.0
+    )
     react = laws.reaction
     jumped = state.take_off_from is not None
     if jumped:
@@ -133,7 +143,16 @@ def act(
         if ground is not None and ground.dynamic:
             take_off = (ground, react("jump", (jx, jy)))
 
-    if grounded and hit is not None and hit.walkable:
+    if slipping:
+        assert hit is not None
+        hover_f = laws.slide(sensed, state, hit, config)
+        hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
+        if hover_f > 0.0:
+            own.append((hover[0], hover[1], SUPPORT))
+            if reacting:
+                rx, ry = react("hover", hover)
+                reactions.append((rx, ry, SUPPORT))
+    elif grounded and hit is not None and (hit.walkable or footing is GROUNDED):
         hover_f = laws.hover(sensed, state, hit, config)
         hover = (hover_f * hit.normal[0], hover_f * hit.normal[1])
         if hover_f > 0.0:

@@ -114,10 +114,20 @@ class ControllerConfig:
         le=MAX_WEIGHTS,
     )
     max_slope: float = param(
-        0.7,
-        doc="Steepest walkable ground, between its normal and up (below π/2).",
+        math.radians(50.0),
+        doc="Steepest walkable ground, between its normal and up (below π/2). 50° as Jolt's "
+        "character: a 45° ramp, a common one in games, is floor with room to spare.",
         unit="rad",
         gt=0.0,
+    )
+    max_lean: float = param(
+        math.radians(5.0),
+        doc="How far the controller's up leans from the field's up while supported, beyond the "
+        "lean its own drive explains while nothing touches it (a push from a wall or a bump is "
+        "not support).",
+        unit="rad",
+        ge=0.0,
+        le=math.pi / 2.0,
     )
     max_speed: float = param(
         4.0, doc="Walking speed at full move input.", unit="m/s", gt=0.0, le=MAX_SPEED
@@ -128,7 +138,13 @@ class ControllerConfig:
         unit="s",
         gt=0.0,
     )
-    traction: float = param(1.0, doc="Foot friction coefficient.", ge=0.0)
+    traction: float = param(
+        1.5,
+        doc="Foot friction coefficient: the drive is at most traction × the hover's force. "
+        "Standing on a slope θ takes tan θ; 1.5 (a rubber sole on dry rock) holds the "
+        "steepest walkable slope (tan 50° = 1.19) with 0.2 of a weight left to walk up it.",
+        ge=0.0,
+    )
     ground_force: float | None = param(
         None,
         doc="Drive force budget on the ground (None: ground_weights).",
@@ -206,6 +222,13 @@ class ControllerConfig:
     )
     coyote_time: float = param(
         0.1, doc="A jump still works this long after leaving the ground.", unit="s", ge=0.0
+    )
+    footing_time: float = param(
+        0.02,
+        doc="A worse footing (GROUNDED to SLIDING or AIRBORNE, SLIDING to AIRBORNE) is taken "
+        "once it has lasted this long; a better one at once.",
+        unit="s",
+        ge=0.0,
     )
     jump_buffer: float = param(
         0.15, doc="A jump press is remembered this long before landing.", unit="s", ge=0.0

@@ -416,7 +416,7 @@ class Controller:
         before = self._control_state
         last = self._last_forces
         sensed = self.senses.sense(
-            world, self._sensed, before, intent, last.push, last.balance_short, config
+            world, self._sensed, before, intent, last.push, last.balance_short, config, last.drive
         )
         state = decide(sensed, before, intent, config)
         if before.grip is not None or state.grip is not None:

@@ -10,17 +10,17 @@ the very functions one controller uses (:mod:`~playground.controller.laws` over
 of rows (:class:`~playground.forces.ledger.ForceRows`).
 
 A member runs its own scalar step this step (in member order, among the others) unless all of
-these hold: it was GROUNDED or AIRBORNE, holds no grip, is not taking off or rising, has no jump
-pending (its last press older than ``jump_buffer``) and no balance about to be lost; its intent
-is a plain move (no jump, grab, push or gravity switch); it follows the default laws
-(:data:`~playground.controller.controller.DEFAULT_LAWS`: a break patches them) under an
-unpatched ``Controller.step``; its body touches nothing (no arbiter) and its probe finds nothing
-(while airborne) or a static ground that does not turn, where :mod:`~playground.controller.stairs`
-changes nothing (no corner's face, no tread ahead); and its forces are within the runaway
-bounds. The whole
-crowd runs scalar while the field is not uniform, bodies may sleep, a step has substeps (a contact
-of an earlier substep counts in the load), or the gravity rules change during the stage (a
-switch of a member that runs scalar comes first).
+these hold: it was GROUNDED or AIRBORNE (no worse footing pending), holds no grip, is not taking
+off or rising, has no jump pending (its last press older than ``jump_buffer``) and no balance
+about to be lost; its intent is a plain move (no jump, grab, push or gravity switch); it follows
+the default laws (:data:`~playground.controller.controller.DEFAULT_LAWS`: a break patches them)
+under an unpatched ``Controller.step``; its body touches nothing (no arbiter) nor has within
+``PUSH_ECHO`` while it leans beyond ``max_lean``; its probe finds nothing (while airborne) or a
+walkable static ground that does not turn (and finds one if it stood), where
+:mod:`~playground.controller.stairs` changes nothing (no corner's face, no tread ahead); and its
+forces are within the runaway bounds. The whole crowd runs scalar while the field is not uniform,
+bodies may sleep, a step has substeps (a contact of an earlier substep counts in the load), or the
+gravity rules change during the stage (a switch of a member that runs scalar comes first).
 
 A batch member's readings (:attr:`Controller.sensed`, ``control_state``, ``last_forces``,
 ``transition``) are built from the arrays when first read. They are the values the scalar step
@@ -49,11 +49,19 @@ from playground.controller._vec import ZERO, unit_or
 from playground.controller.action import ControllerForces
 from playground.controller.config import ControllerConfig
 from playground.controller.elementwise import ARRAYS
-from playground.controller.sensing import GroundHit, Sensed
+from playground.controller.sensing import (
+    PUSH_ECHO,
+    GroundHit,
+    Sensed,
+    effort,
+    effort_on,
+    lean,
+)
 from playground.controller.states import AIRBORNE, GROUNDED, ControllerState, Transition
 from playground.forces.ledger import Category, ForceRows, RowBodies
 from playground.intents import Intent
 from playground.limits import MAX_COORDINATE, RUNAWAY_FORCE
+from playground.vec import Vec
 from playground.world.schedule import Stage
 from playground.world.world import World
 
@@ -240,6 +248,7 @@ class Crowd:
                 "still",
                 "getup_at",
                 "getup_from",
+                "touched_at",
             )
         }
         # Each member's last ground: a GroundHit, or the view of the batch step it stood on.
@@ -267,6 +276,7 @@ class Crowd:
             and state.take_off_from is None
             and sensed.ground_motion is None
             and state.ledge is None
+            and state.footing_lost == 0.0
         )
         self._code[i] = _CODES.get(state.state, 0) if ok else 0
         cur = self.cur
@@ -280,6 +290,7 @@ class Crowd:
         cur["still"][i] = state.still
         cur["getup_at"][i] = state.getup_at
         cur["getup_from"][i] = state.getup_from
+        cur["touched_at"][i] = state.touched_at
         self._last_ground[i] = state.last_ground
         self._views[i] = None
 
@@ -355,6 +366,28 @@ class Crowd:
             held_y = np.where(weak, cur["uy"], puy)
             ux = np.where(grounded_before, np.where(finite, held_x, ux), ux)
             uy = np.where(grounded_before, np.where(finite, held_y, uy), uy)
+            # The perceived up is held to its lean (sensing.lean) and slopes are measured
+            # against the field's up: where the perceived up is surely within max_lean of the
+            # field's, lean returns it as it is.
+            leaned = grounded_before & finite & ~weak & has_g
+            dot = gux * pux + guy * puy
+            cross = gux * puy - guy * pux
+            inside = (dot > 0.0) & (np.abs(cross) < self._sin_lean() * (1.0 - 1e-9))
+            # Beyond it (leaning into its step), the very function in floats, member by member.
+            for i in np.flatnonzero(leaned & ~inside & ok).tolist():
+                c = members[i]
+                # Standing, or pushed within PUSH_ECHO, no lean of its own (sensing.leaning); a
+                # member touching anything now runs its own step (below).
+                quiet = c.intent.move == 0.0 or t - cur["touched_at"][i] <= PUSH_ECHO
+                own = ZERO if quiet else self._effort(c, i)
+                weight = raw.mass(self._handles[i]) * math.hypot(gx[i], gy[i])
+                level = (float(gux[i]), float(guy[i]))
+                perceived = (float(pux[i]), float(puy[i]))
+                ux[i], uy[i] = lean(perceived, level, own, weight, c.config.max_lean)
+            lx = np.where(leaned, gux, ux)
+            ly = np.where(leaned, guy, uy)
+        else:
+            lx, ly = ux, uy
         touched = touching_ids(world.space, self._arbiters)
         if len(touched):
             ok &= ~np.isin(self._ids, touched)
@@ -452,7 +485,7 @@ class Crowd:
             False,
         )
         sensed = _Sensed(body, (ux, uy), t, dt, wc.substeps, (gx, gy))
-        nxt = self._act(sensed, hits, hit, move, ok, t, dt)
+        nxt = self._act(sensed, hits, hit, move, ok, t, dt, (lx, ly))
         nxt["code_before"] = self._code.copy()
         nxt["short_before"] = cur["short"].copy()
         nxt["ground"] = ground
@@ -614,6 +647,27 @@ class Crowd:
             self._rows_version = world.tracked_version
         return self._rows
 
+    def _effort(self, c: Controller, i: int) -> Vec:
+        """Member ``i``'s legs' effort in its last step (sensing.effort), from the arrays of
+        its last batch step without building its readings, or from its own scalar step's."""
+        if c.stale is not self:
+            return effort(c.last_forces.drive, c.sensed)
+        view = self._views[i]
+        drive = (
+            (float(view["drive_x"][i]), float(view["drive_y"][i])) if view["drive_on"][i] else ZERO
+        )
+        _, _, nx, ny, *_ = view["hits"]
+        normal = None if view["ground"][i] is None else (float(nx[i]), float(ny[i]))
+        body, _, _, _, vgx, vgy, *_ = view["sensed"]
+        return effort_on(drive, normal, (float(vgx[i]), float(vgy[i])), float(body.mass[i]))
+
+    def _sin_lean(self) -> NDArray[np.float64]:
+        """Each member's sin(max_lean), by its config group."""
+        out = np.zeros(len(self.members))
+        for g in self._groups:
+            out[g.rows] = math.sin(g.config.max_lean)
+        return out
+
     def _gravity(self, world: World) -> tuple[Any, Any, Any, Any, Any]:
         """Each member's gravity (its rule on the uniform field), the unit up against it, and
         whether it has any: read again only when the field or a rule changed."""
@@ -653,9 +707,13 @@ class Crowd:
         ok: NDArray[np.bool_],
         t: float,
         dt: float,
+        level: tuple[NDArray[np.float64], NDArray[np.float64]],
     ) -> dict[str, Any]:
         """decide and act of the batch members, per config group; ``ok`` loses a member whose
-        forces are beyond the runaway bounds."""
+        forces are beyond the runaway bounds, that finds ground too steep to stand on (it
+        slides, or is about to) or that loses its ground (the state holds GROUNDED for
+        ``footing_time``): the scalar step decides those. Slopes are measured against
+        ``level`` (the field's up, or up)."""
         n = len(move)
         cur = self.cur
         nx, ny = hits.normal
@@ -685,13 +743,17 @@ class Crowd:
         out["locked"] = np.zeros(n, dtype=bool)
         ux, uy = sensed.up
         out["ux"], out["uy"] = ux, uy
+        lx, ly = level
+        out["lx"], out["ly"] = lx, ly
+        grounded_before = self._code == 1
         out["load"] = np.maximum(0.0, -(cur["push_x"] * ux + cur["push_y"] * uy)) + 0.0
         state = ControllerState(GROUNDED)
         for g in self._groups:
             cfg = g.config
             r = g.rows
-            walkable = (nx * ux + ny * uy >= g.cos_slope) & hit
+            walkable = (nx * lx + ny * ly >= g.cos_slope) & hit
             on_ground = walkable  # not rising: a batch member never is
+            ok[r] &= ~(hit & ~walkable)[r] & ~(grounded_before & ~on_ground)[r]
             short = cur["short"]
             saturated = np.where(short == 1.0, cur["saturated"] + dt, 0.0)
             saturated = np.where(short < 0.0, cur["saturated"], saturated)
@@ -781,6 +843,7 @@ class Crowd:
         c.sensed = Sensed(
             state_body, up, t, dt, substeps, (float(gx[i]), float(gy[i])), perceived, hit,
             None, 0.0, float(nxt["load"][i]), False, last_short, 0.0, 0.0, None, ZERO, None,
+            None, (float(nxt["lx"][i]), float(nxt["ly"][i])),
         )  # fmt: skip
         code = int(nxt["code"][i])
         new_state = _STATES[code]
@@ -794,7 +857,7 @@ class Crowd:
         c.control_state = ControllerState(
             new_state, False, before.jump_pressed_at, float(nxt["grounded_at"][i]), False,
             last, float(nxt["saturated"][i]), before.still, 0.0, before.getup_at,
-            before.getup_from, None, None, None, None,
+            before.getup_from, None, None, None, None, None, 0.0, before.touched_at,
         )  # fmt: skip
         grounded = code == 1
         hover = (float(nxt["hover_x"][i]), float(nxt["hover_y"][i])) if grounded else ZERO

@@ -22,12 +22,17 @@ from playground.controller.states import (
     GROUNDED,
     HANGING,
     OFF_BALANCE,
+    SLIDING,
+    SLOPE_BAND,
     ControllerState,
     State,
 )
 from playground.intents import Intent
 
-__all__ = ["crush_limit", "decide", "is_still", "steady"]
+__all__ = ["crush_limit", "decide", "footing", "is_still", "steady"]
+
+# The footings in order, worst first: a better one is taken at once, a worse one once it lasts.
+_RANK = {AIRBORNE: 0, SLIDING: 1, GROUNDED: 2}
 
 
 def decide(
@@ -41,8 +46,10 @@ def decide(
     a ledge held by its edge is climbed (its grip let go, the climb's force takes over) on a
     climb up, until it is up on walkable ground (:func:`~playground.controller.ledge.up`),
     or the grab is released;
-    then the state machine moves on, and a buffered jump takes off if the state allows it
-    (grounded, or airborne within ``coyote_time`` of the ground).
+    then the state machine moves on (between GROUNDED, SLIDING and AIRBORNE by
+    :func:`footing`, a worse footing once it has lasted ``footing_time``), and a buffered
+    jump takes off if the state allows it (grounded, or airborne within ``coyote_time`` of the
+    ground).
     """
     t = sensed.time
     dt = sensed.dt
@@ -80,6 +87,7 @@ def decide(
     grounded_at = state.grounded_at
     still = state.still
     relieved = 0.0
+    footing_lost = 0.0
     getup_at = state.getup_at
     getup_from = state.getup_from
     on_ground = hit is not None and hit.walkable and not rising
@@ -127,10 +135,17 @@ def decide(
             # Relieved only for a moment: a rocking or bouncing load swings around the
             # threshold (and off and on again), and a state that followed it would flicker.
             relieved = state.relieved + dt
-        elif on_ground:
-            current = GROUNDED
         else:
-            current = AIRBORNE
+            found = footing(sensed, hit, rising, current, config)
+            rank = _RANK.get(current)
+            if rank is None or _RANK[found] >= rank:
+                current = found
+            elif state.footing_lost + dt < config.footing_time:
+                # Worse footing only for a moment: the ground at the edge of the probe's reach,
+                # a crest crossed at speed, one odd reading where two facets meet.
+                footing_lost = state.footing_lost + dt
+            else:
+                current = found
         if current is not AIRBORNE and on_ground:
             grounded_at = t
 
@@ -146,13 +161,14 @@ def decide(
             take_off_from = current
             current = AIRBORNE
             rising = True
+            footing_lost = 0.0
 
     # Positionally, in the order of the fields: building one with keywords is dearer
     # (docs/performance.md, row positional), and one is built every step.
     return ControllerState(
         current, intent.jump, jump_pressed_at, grounded_at, rising, last_ground, saturated,
         still, relieved, getup_at, getup_from, grip, take_off_from, intent.gravity,
-        intent.nullify, ledge,
+        intent.nullify, ledge, footing_lost, t if sensed.touching else state.touched_at,
     )  # fmt: skip
 
 
@@ -167,6 +183,24 @@ def crush_limit(state: State, mass: float, config: ControllerConfig) -> float:
     """
     threshold = config.crush_threshold(mass)
     return threshold * config.crush_release if state is CRUSHED else threshold
+
+
+def footing(
+    sensed: Sensed, hit: GroundHit | None, rising: bool, current: State, config: ControllerConfig
+) -> State:
+    """The footing the probe's ``hit`` gives: GROUNDED on walkable ground (for a controller
+    already ``current``-ly GROUNDED, up to :data:`SLOPE_BAND` steeper than ``max_slope``),
+    SLIDING on ground too steep to stand on, AIRBORNE over none (or while ``rising``)."""
+    if hit is None or rising:
+        return AIRBORNE
+    if hit.walkable:
+        return GROUNDED
+    nx, ny = hit.normal
+    ux, uy = sensed.level
+    cos_up = nx * ux + ny * uy
+    if current is GROUNDED and cos_up >= math.cos(config.max_slope + SLOPE_BAND):
+        return GROUNDED
+    return SLIDING if cos_up > 0.0 else AIRBORNE
 
 
 def steady(sensed: Sensed, config: ControllerConfig) -> bool:

@@ -16,6 +16,7 @@ function replaced. The model they follow is in
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
@@ -33,6 +34,7 @@ from playground.params import bounded_vec
 from playground.vec import Vec
 
 __all__ = [
+    "RISE_SLOPE",
     "Laws",
     "Reacting",
     "balance",
@@ -43,11 +45,20 @@ __all__ = [
     "jump",
     "push",
     "reaction",
+    "slide",
     "steer",
 ]
 
 Reacting = Literal["hover", "drive", "jump", "push", "climb"]
 """The laws whose force has a reaction on another body (or, for the push, on us)."""
+
+
+RISE_SLOPE = 0.35
+"""rad (20°): ground sloping more than this from up has the hover's rise held back
+(:func:`hover`); flat ground, and a stair's tread, does not."""
+_COS_RISE_SLOPE = math.cos(RISE_SLOPE)
+_UNLIMITED = 1.0e9
+"""m: a rise no height error reaches."""
 
 
 def hover(
@@ -56,11 +67,12 @@ def hover(
     hit: GroundHit,
     config: ControllerConfig,
     ops: Ops = FLOATS,
+    target: float | None = None,
 ) -> float:
     """The hover spring along the ground normal, within the legs' budget
     (:meth:`~playground.controller.config.ControllerConfig.hover_budget`): its magnitude, N (the
-    target height rises smoothly while getting up)."""
-    target = config.ride_height
+    target height, ``ride_height`` unless given, m, rises smoothly while getting up)."""
+    target = config.ride_height if target is None else target
     if state.state is GETTING_UP:
         s = min(1.0, (sensed.time - state.getup_at) / config.getup_time)
         target = state.getup_from + (target - state.getup_from) * s * s * (3.0 - 2.0 * s)
@@ -84,13 +96,56 @@ def hover(
     omega = TWO_PI * config.hover_frequency
     k = m * omega * omega
     c = 2.0 * config.hover_damping * m * omega
-    spring = hover_spring(k, c, m, target - h, v_n, sensed.dt, sensed.substeps)
+    # Onto a slope the height along its normal drops at once where the probe's circle passes
+    # from the floor to the slope (0.25 m at 45°), and the spring would rise at ω·e/2 and, a
+    # floor that cannot pull, overshoot and leave the slope: on ground sloping over RISE_SLOPE
+    # from up it pulls as from at most 8·g_n/ω² below, whence (critically damped) it rises at
+    # 4·g_n/ω, a speed gravity alone stops in that gap. (A stair's tread, level, is met ahead
+    # with the whole riser in view: stairs.py; there the rise is not held back.)
+    ux, uy = sensed.up
+    level = (nx * ux + ny * uy >= _COS_RISE_SLOPE) * _UNLIMITED
+    rise = ops.max(8.0 * weight / (m * omega * omega), level)
+    spring = hover_spring(k, c, m, ops.min(rise, target - h), v_n, sensed.dt, sensed.substeps)
     force = ops.min(config.hover_budget(m), ops.max(0.0, weight + spring))
     # Weightless (a nullified body) and not pressed on this ground by its frame either: nothing
     # holds us on it, the legs push with nothing. Otherwise a weightless body whose held up
     # swings toward whatever it bumps (its inner ear reads the bump as gravity) finds that body
     # at its flank, a few tenths of a metre away, and the spring kicks off it at its budget.
     return ops.unless((weight == 0.0) & (gx == 0.0) & (gy == 0.0), force)  # type: ignore[no-any-return]
+
+
+SLIDE_REACH = 0.75
+"""The part of the probe's length at which a sliding controller is held over its slope: the
+probe, swept along up, reaches a slope θ at a height (along its normal) of only probe_radius +
+probe_length·cosθ, less than ride_height beyond about 50°."""
+
+
+def slide(
+    sensed: Sensed, state: ControllerState, hit: GroundHit, config: ControllerConfig
+) -> float:
+    """The hover on ground too steep to stand on: the same spring along its normal, held at
+    ride height or lower, where the probe still reaches the slope with a quarter of its length
+    to spare (:data:`SLIDE_REACH`): its magnitude, N. No drive goes with it: the feet have no
+    grip there, and the controller slides down the slope.
+
+    >>> import math
+    >>> from playground.controller.sensing import Sensed, GroundHit
+    >>> from playground._engine.state import BodyState
+    >>> c, s = math.cos(math.radians(60.0)), math.sin(math.radians(60.0))   # a 60° slope
+    >>> hit = GroundHit(None, (0.0, 0.0), (-s, c), 1.25, False, (0.0, 0.0), (0.0, 0.0),
+    ...                 (0.0, 0.0), 0.0, False)
+    >>> config = ControllerConfig()
+    >>> round(config.probe_radius + SLIDE_REACH * config.probe_length * c, 3)   # m: held at
+    0.625
+    >>> at = Sensed(BodyState(-0.625 * s, 0.625 * c, 0.0, 0.0, 1.0, 0.0, 0.0, 70.0, 1.0),
+    ...             (0.0, 1.0), dt=1 / 120, gravity=(0.0, -9.81))
+    >>> round(slide(at, ControllerState(), hit, config), 2), round(70.0 * 9.81 * c, 2)  # N
+    (343.35, 343.35)
+    """
+    nx, ny = hit.normal
+    ux, uy = sensed.up
+    reach = config.probe_radius + SLIDE_REACH * config.probe_length * (nx * ux + ny * uy)
+    return hover(sensed, state, hit, config, FLOATS, min(config.ride_height, reach))
 
 
 def drive(
@@ -241,6 +296,7 @@ class Laws:
     """
 
     hover: Callable[[Sensed, ControllerState, GroundHit, ControllerConfig], float] = hover
+    slide: Callable[[Sensed, ControllerState, GroundHit, ControllerConfig], float] = slide
     drive: Callable[[Sensed, GroundHit, float, float, ControllerConfig], Vec] = drive
     steer: Callable[[Sensed, float, ControllerConfig], Vec] = steer
     balance: Callable[[Sensed, GroundHit | None, ControllerConfig], float] = balance

@@ -48,7 +48,19 @@ from playground.world.world import World
 KINEMATIC = pymunk.Body.KINEMATIC
 DYNAMIC = pymunk.Body.DYNAMIC
 
-__all__ = ["GroundHit", "PushTarget", "Sensed", "Senses", "footing", "height", "up_speed"]
+__all__ = [
+    "GroundHit",
+    "PushTarget",
+    "Sensed",
+    "Senses",
+    "effort",
+    "effort_on",
+    "footing",
+    "height",
+    "lean",
+    "leaning",
+    "up_speed",
+]
 
 GroundMotion = tuple[pymunk.Body, float, float, float]
 """A kinematic ground as the probe read it: the body, its velocity (m/s) and spin (rad/s)."""
@@ -152,6 +164,8 @@ class Sensed:
             (read only while holding or taking a hold; zero otherwise).
         push_target: what the arms could push (only looked for while pushing).
         ledge: the ledge held by its edge or being climbed, as it is now (None: none).
+        level: the up a ground's slope is measured against (unit): the field's while the
+            perceived up is held to its lean (:func:`lean`), else ``up``; (0, 0) as built.
     """
 
     body: BodyState
@@ -173,6 +187,7 @@ class Sensed:
     engine: Vec = ZERO
     push_target: PushTarget | None = None
     ledge: LedgeHold | None = None
+    level: Vec = ZERO
 
 
 def footing(ground: pymunk.Body, x: float, y: float, nx: float, ny: float) -> float:
@@ -212,6 +227,71 @@ def height(sensed: Sensed, hit: GroundHit) -> float:
     """Height of the centre over the hit point along the ground normal, m."""
     body = sensed.body
     return (body.x - hit.point[0]) * hit.normal[0] + (body.y - hit.point[1]) * hit.normal[1]
+
+
+def lean(perceived: Vec, level: Vec, effort: Vec, weight: float, max_lean: float) -> Vec:
+    """The perceived up (unit) held to the lean its own step explains: within ``max_lean``
+    (rad) of the field's up ``level`` (unit), and on the side its legs' ``effort`` (N: the
+    drive beyond holding the slope) pushes, no further than that effort leans its ``weight``
+    (N) plus ``max_lean``.
+
+    The inner ear reads every push as support: walking into a wall, the wall's deceleration
+    tilts the perceived up away from it, and pressing into a slope too steep to stand on
+    tilts it along the slope's normal. A lean its own legs make (leaning into its own step)
+    is the controller's; one that a push from outside gives is not, and tipped by it the probe
+    would take a wall for a floor. ``perceived`` itself comes back when it is within the
+    bounds.
+
+    >>> lean((0.6, 0.8), (0.0, 1.0), (0.0, 0.0), 686.7, 0.1)     # a push tips it 37°: held
+    (0.09983341664682815, 0.9950041652780258)
+    >>> lean((0.6, 0.8), (0.0, 1.0), (515.0, 0.0), 686.7, 0.1)   # its own step leans it so
+    (0.6, 0.8)
+    """
+    px, py = perceived
+    ax, ay = level
+    angle = math.atan2(ax * py - ay * px, ax * px + ay * py)
+    if -max_lean <= angle <= max_lean:
+        return perceived
+    ex, ey = effort
+    own = math.atan2(ax * ey - ay * ex, weight + ax * ex + ay * ey)
+    held = max(min(0.0, own) - max_lean, min(max(0.0, own) + max_lean, angle))
+    if held == angle:
+        return perceived
+    c, s = math.cos(held), math.sin(held)
+    return (c * ax - s * ay, s * ax + c * ay)
+
+
+def effort(drive: Vec, sensed: Sensed) -> Vec:
+    """The legs' effort in a ``drive`` (N) acted on the ground ``sensed`` found: the drive
+    less its hold on the slope, −m·g·t along the ground's tangent t (:func:`~playground.
+    controller.laws.drive`): what leans the controller into its step."""
+    hit = sensed.ground
+    return effort_on(drive, None if hit is None else hit.normal, sensed.gravity, sensed.body.mass)
+
+
+def effort_on(drive: Vec, normal: Vec | None, gravity: Vec, mass: float) -> Vec:
+    """:func:`effort` from its parts: the ground's ``normal`` (None: no ground), the
+    ``gravity`` (m/s²) and the body's ``mass`` (kg) of that step."""
+    if normal is None or drive is ZERO:
+        return drive
+    nx, ny = normal
+    gx, gy = gravity
+    pull = mass * (gx * ny - gy * nx)  # gravity along the tangent (ny, −nx), N
+    return (drive[0] + pull * ny, drive[1] - pull * nx)
+
+
+PUSH_ECHO = 0.3
+"""s: how long after its body last touched anything a lean beyond ``max_lean`` waits: pressed
+against a wall or a too-steep slope, the contact throws it back off and the drive sends it in
+again, and a lean into that step would wedge its head into the wall, which throws it back
+again (a 0.8 s cycle against a 60° slope, levels/steep_slope.toml)."""
+
+
+def leaning(state: ControllerState, intent: Intent, time: float, contacts: Contacts) -> bool:
+    """Whether the lean its own step explains may count (:func:`lean`): it walks (its
+    ``intent`` moves: standing, its drive only answers what the ground does) and nothing
+    touches its body now, nor has for :data:`PUSH_ECHO` (``time`` the world's, s)."""
+    return intent.move != 0.0 and time - state.touched_at > PUSH_ECHO and not contacts.touching()
 
 
 # The states in which the controller is supported: its up is the perceived one.
@@ -267,12 +347,16 @@ class Senses:
         last_push: Vec,
         last_balance_short: bool | None,
         config: ControllerConfig,
+        last_drive: Vec = ZERO,
     ) -> Sensed:
         """Read the body, the world's settings, the gravity at it, up, the ground under it, the
         load on it and what the hands reach, given the last step's reading (``before``), the
-        state, the intent and the last step's push (N, on us) and balance verdict.
+        state, the intent and the last step's push (N, on us) and balance verdict, and the
+        last step's drive (``last_drive``, N: its effort is the lean it explains).
 
-        Up is the perceived one while supported and the field while airborne (it sees where it
+        Up is the perceived one while supported (within the lean its own forces explain
+        while nothing touches it: :func:`lean`; slopes are then measured against the field's
+        up) and the field while airborne (it sees where it
         will land), fallen or getting up (contacts while lying and rising shake the inner ear),
         or on a ledge.
         """
@@ -282,6 +366,7 @@ class Senses:
         gx, gy = self.gravity(world)
         s = state.state
         perceived_up: Vec | None = None
+        level: Vec | None = None
         # Hanging from a ledge or climbing it, up is the field's: the hands' pull sways with
         # the body, and its reading fed back into the balance rings (a 2-step oscillation
         # against a loose 300 kg crate at dt = 1/60 s, levels/ledge_climb.toml).
@@ -295,10 +380,25 @@ class Senses:
                 # the fall (after a gravity flip, the opposite one) until the new support has
                 # built up a reading: keep the up we fell with meanwhile.
                 ux, uy = before.up
+            elif gx != 0.0 or gy != 0.0:
+                # A lean beyond max_lean only as far as its own step explains, and only while
+                # nothing touches it: then nothing else pushes. Slopes are then measured
+                # against the field's up: leaning into a climb does not steepen the slope.
+                level = unit_or(-gx, -gy, before.up)
+                weight = body.mass * math.hypot(gx, gy)
+                leaned = lean(perceived_up, level, ZERO, weight, config.max_lean)
+                if leaned is not perceived_up and leaning(
+                    state, intent, world.time, self._contacts
+                ):
+                    own = effort(last_drive, before)
+                    leaned = lean(perceived_up, level, own, weight, config.max_lean)
+                ux, uy = leaned
         else:
             ux, uy = unit_or(-gx, -gy, before.up)
             if s is GETTING_UP:
                 perceived_up = world.perceived_up(name)
+        if level is None:
+            level = (ux, uy)
 
         # Grounded and pulled toward the ground, it steps down to a tread below the probe's
         # length along the field (stairs.below); not while jumping (rising), nor falling away
@@ -308,7 +408,16 @@ class Senses:
             g = math.hypot(gx, gy)
             down = (gx / g, gy / g)
         ground, motion = self.probe(
-            body, ux, uy, wc.dt, before.ground_motion, config, intent.move, down
+            body,
+            ux,
+            uy,
+            wc.dt,
+            before.ground_motion,
+            config,
+            intent.move,
+            down,
+            level,
+            s is GROUNDED,
         )
         # Each contact's impulse summed over the step's substeps, over the step: its mean.
         contact_load, touching = self._contacts.load_and_touching(ux, uy, wc.dt)
@@ -333,7 +442,7 @@ class Senses:
         return Sensed(
             body, (ux, uy), world.time, wc.dt, wc.substeps, (gx, gy), perceived_up, ground,
             motion, contact_load, load, touching, last_balance_short, grip_impulse, slip,
-            handhold, engine, push_target, on_ledge,
+            handhold, engine, push_target, on_ledge, level,
         )  # fmt: skip
 
     def handhold(self, up: Vec, config: ControllerConfig) -> Grip | None:
@@ -377,6 +486,8 @@ class Senses:
         config: ControllerConfig,
         move: float = 0.0,
         down: Vec | None = None,
+        level: Vec | None = None,
+        standing: bool = False,
     ) -> tuple[GroundHit | None, GroundMotion | None]:
         """Sweep a circle from the centre along −up; the nearest other shape is the ground.
         Returns it and, if kinematic, its motion for the next step's probe (``last_motion``:
@@ -387,7 +498,11 @@ class Senses:
         (the hover lifts the body onto it before its cap meets the riser); stepping ``down``
         (grounded the step before and coming down: the field's direction, unit) where the probe
         finds no walkable ground, a tread up to the step's reach past the probe's length along
-        it is the ground."""
+        it is the ground.
+
+        Its slope is measured against ``level`` (unit; None: up); ``standing`` (GROUNDED), a
+        shape too steep to stand on is passed over for a walkable one beside it within ride
+        height (the foot of a steep slope, a wall)."""
         px, py = body.x, body.y
         length = config.probe_length
         # The nearest of every hit (playground._engine.sweep says why not pymunk's
@@ -402,6 +517,30 @@ class Senses:
             )  # fmt: skip
         if found is not None:
             found = stairs.face(found, px, py, ux, uy, radius)
+        lx, ly = (ux, uy) if level is None else level
+        cos_max = math.cos(config.max_slope)
+        if (
+            standing
+            and found is not None
+            and found[3] * lx + found[4] * ly < cos_max
+            and (px - found[1]) * ux + (py - found[2]) * uy > config.half_length
+            and found[0].collision_type != one_way.ONE_WAY
+        ):
+            # Standing at the foot of ground too steep to stand on, whose face has come within
+            # the probe's circle by its feet (below its lower cap's centre): the feet are still
+            # on the walkable ground beside it. (A one-way shape is no slope: passes decides.)
+            steep = found[0]
+            beside = nearest_where(
+                self._space, (px, py), end, radius, self._filter,
+                lambda shape: shape is not steep and not one_way.passes(shape, px, py, radius),
+            )  # fmt: skip
+            if (
+                beside is not None
+                and beside[3] * lx + beside[4] * ly >= cos_max
+                and (px - beside[1]) * ux + (py - beside[2]) * uy
+                <= config.ride_height + config.probe_radius
+            ):
+                found = beside
         if down is not None and (found is None or not stairs.walkable(found, ux, uy, config)):
             found = stairs.below(self._sweep, px, py, down, (ux, uy), config) or found
         ground = found[0].body if found is not None else None
@@ -446,7 +585,7 @@ class Senses:
                 own_x = (vx - last_motion[1]) / dt - alpha * dy
                 own_y = (vy - last_motion[2]) / dt + alpha * dx
         distance = (px - hx) * ux + (py - hy) * uy
-        walkable = nx * ux + ny * uy >= math.cos(config.max_slope)
+        walkable = nx * lx + ny * ly >= cos_max
         frame_velocity = (vx + rx, vy + ry)
         frame_acceleration = (
             (cos_t * rx - sin_t * ry - rx) / dt + own_x,

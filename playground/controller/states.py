@@ -33,6 +33,8 @@ __all__ = [
     "GROUNDED",
     "HANGING",
     "OFF_BALANCE",
+    "SLIDING",
+    "SLOPE_BAND",
     "ControllerState",
     "State",
     "Transition",
@@ -48,8 +50,11 @@ class State(Enum):
       GROUNDED up a flight (lifted onto the tread ahead) and down one, while it drops onto a
       tread within its step's reach (:mod:`~playground.controller.stairs`): the walk cycle
       over each step, not the fall.
-    - AIRBORNE: no walkable ground under it (jumping, falling, or a step off an edge within
-      ``coyote_time``, when a jump still works): the jump, or the fall.
+    - SLIDING: on ground too steep to stand on (its normal beyond ``max_slope`` of up): the
+      feet have no grip, so the hover holds it off the slope and it slides down, with no
+      traction up it and no jump: the slide, crouched, facing down the slope.
+    - AIRBORNE: no ground under it within the probe's reach (jumping, falling, or a step off
+      an edge within ``coyote_time``, when a jump still works): the jump, or the fall.
     - HANGING: holding on with its hands (a body anywhere, or a ledge's edge) through the grip
       joint: the hang, a climb along the held body.
     - CLIMBING: pulling itself up onto a ledge and over its edge, its hands on the edge: the
@@ -60,6 +65,12 @@ class State(Enum):
 
     >>> State("grounded") is State.GROUNDED, State.CRUSHED.value
     (True, 'crushed')
+
+    Between GROUNDED, SLIDING and AIRBORNE a better footing is taken at once (landing, or
+    reaching walkable ground) and a worse one only once it has lasted ``footing_time`` (the
+    probe losing the ground at the edge of its reach, a crest crossed at speed); ground a
+    little steeper than ``max_slope`` (:data:`SLOPE_BAND`) still holds a GROUNDED controller:
+    a signal near a threshold never makes the state flicker.
     """
 
     GROUNDED = "grounded"
@@ -69,6 +80,7 @@ class State(Enum):
     GETTING_UP = "getting_up"
     CRUSHED = "crushed"
     CLIMBING = "climbing"
+    SLIDING = "sliding"
 
 
 # The members as module names, for the step: reading ``State.X`` goes through the enum's
@@ -80,6 +92,12 @@ OFF_BALANCE = State.OFF_BALANCE
 GETTING_UP = State.GETTING_UP
 CRUSHED = State.CRUSHED
 CLIMBING = State.CLIMBING
+SLIDING = State.SLIDING
+
+SLOPE_BAND = 0.035
+"""rad (2°): how much steeper than ``max_slope`` the ground under a GROUNDED controller may
+read before it slides: the probe's circle reads a surface's normal a hair either side of
+``max_slope`` on a slope at it (and where two facets meet)."""
 
 
 @dataclass(slots=True)
@@ -109,6 +127,10 @@ class ControllerState:
         gravity_wish: the own-gravity direction the intent asked for last step.
         nullify_wish: the body whose gravity the intent nullified last step.
         ledge: the ledge held by its edge or being climbed (None: none).
+        footing_lost: how long the footing sensed has been worse than ``state`` (GROUNDED
+            over none or too steep a ground, SLIDING over none), s: it changes at
+            ``footing_time``.
+        touched_at: when its body last touched anything (−∞: never).
     """
 
     state: State = AIRBORNE
@@ -127,6 +149,8 @@ class ControllerState:
     gravity_wish: Vec | None = None
     nullify_wish: str | None = None
     ledge: Ledge | None = None
+    footing_lost: float = 0.0
+    touched_at: float = -math.inf
 
     @property
     def footing(self) -> State:

@@ -16,6 +16,7 @@ from typing import Any
 import pymunk
 
 from playground import movers as movers_mod
+from playground.controller import decision as decision_mod
 from playground.controller import ledge as ledge_mod
 from playground.controller import sensing as sensing_mod
 from playground.controller import stairs as stairs_mod
@@ -26,6 +27,8 @@ from playground.controller.controller import Controller
 from playground.controller.grab import Grip
 from playground.controller.laws import Laws, Reacting
 from playground.controller.ledge import Ledge
+from playground.controller.sensing import GroundHit, Sensed
+from playground.controller.states import State
 from playground.faults.catalog import register
 from playground.faults.patching import (
     after,
@@ -436,4 +439,91 @@ def _stairs_no_step_down() -> Iterator[None]:
     """No step down: a grounded player whose probe loses the ground goes AIRBORNE, however
     near the tread below."""
     with replaced(stairs_mod, "below", lambda _: lambda *a, **k: None):
+        yield
+
+
+@register("slope_speed_horizontal")
+def _slope_speed_horizontal() -> Iterator[None]:
+    """The drive's goal is move·max_speed measured horizontally (along up's tangent), not
+    along the ground: up or down a slope θ it walks at max_speed·cosθ along it (2.83 m/s of
+    4 m/s at 45°)."""
+
+    def make(
+        original: Callable[[Sensed, GroundHit, float, float, ControllerConfig], Vec],
+    ) -> Callable[[Sensed, GroundHit, float, float, ControllerConfig], Vec]:
+        parameter(original, Laws, "move")
+
+        def drive(
+            sensed: Sensed, hit: GroundHit, move: float, hover: float, config: ControllerConfig
+        ) -> Vec:
+            nx, ny = hit.normal
+            ux, uy = sensed.up
+            return original(sensed, hit, move * abs(nx * ux + ny * uy), hover, config)
+
+        return drive
+
+    with controller_laws(drive=make):
+        yield
+
+
+@register("slope_hold_in_budget")
+def _slope_hold_in_budget() -> Iterator[None]:
+    """The drive holds a slope out of the legs' budget (within ±ground_force, not within the
+    hold ± ground_force): no slope steeper than asin(ground_weights), 31°, is held, and up a
+    45° slope the player slides back."""
+
+    def make(
+        original: Callable[[Sensed, GroundHit, float, float, ControllerConfig], Vec],
+    ) -> Callable[[Sensed, GroundHit, float, float, ControllerConfig], Vec]:
+        parameter(original, Laws, "hover")
+
+        def drive(
+            sensed: Sensed, hit: GroundHit, move: float, hover: float, config: ControllerConfig
+        ) -> Vec:
+            fx, fy = original(sensed, hit, move, hover, config)
+            nx, ny = hit.normal
+            along = fx * ny - fy * nx  # along the tangent (ny, −nx), N
+            budget = config.ground_budget(sensed.body.mass)
+            f = max(-budget, min(budget, along))
+            return ZERO if f == 0.0 else (f * ny, -f * nx)
+
+        return drive
+
+    with controller_laws(drive=make):
+        yield
+
+
+@register("sliding_removed")
+def _sliding_removed() -> Iterator[None]:
+    """Ground too steep to stand on counts as none: the controller is AIRBORNE over it (its up
+    the field's, no hover) instead of SLIDING down it on its hover."""
+
+    def make(original: Callable[..., State]) -> Callable[..., State]:
+        parameter(original, decision_mod, "rising")
+
+        def footing(*args: Any, **kwargs: Any) -> State:
+            found = original(*args, **kwargs)
+            return State.AIRBORNE if found is State.SLIDING else found
+
+        return footing
+
+    with replaced(decision_mod, "footing", make):
+        yield
+
+
+@register("wall_push_as_support")
+def _wall_push_as_support() -> Iterator[None]:
+    """The controller's up is the perceived one whatever pushes it: pressed against a wall or
+    a slope too steep to stand on, their push tips its up (and its balance leans it) toward
+    their normal."""
+
+    def make(original: Callable[..., Vec]) -> Callable[..., Vec]:
+        parameter(original, sensing_mod, "perceived")
+
+        def lean(perceived: Vec, *args: Any, **kwargs: Any) -> Vec:
+            return perceived
+
+        return lean
+
+    with replaced(sensing_mod, "lean", make):
         yield

@@ -54,6 +54,10 @@ def _tilt(scene: Scene, body: str) -> Value:
     return scene.tilt(body)
 
 
+def _up(scene: Scene, body: str) -> Value:
+    return scene.up(body)
+
+
 def _state(scene: Scene, body: str) -> Value:
     return scene.state(body)
 
@@ -93,6 +97,7 @@ _BY_NAME: dict[str, Reader] = {
     "angle": _angle,
     "angular_velocity": _angular_velocity,
     "tilt": _tilt,
+    "up": _up,
     "support_filtered": _support_filtered,
     "perceived_gravity": _perceived_gravity,
     "state": _state,
