@@ -23,7 +23,7 @@ fps = 60
 PPM = 22.0  # pixels a metre: the capsule (1.8 m) is 40 px tall, as pymunk's player
 PLATFORM_SPEED = 2.0  # m/s, pymunk's 1 px a frame at 60 fps
 # pymunk's jump clears the platforms 50 px (2.3 m) apart; the capsule's default 4 m/s does not.
-PLAYER = ControllerConfig(jump_speed=7.5, max_slope=0.85)  # m/s; rad: the 45° ramp is floor
+PLAYER = ControllerConfig(jump_speed=7.5)  # m/s; the 45° ramp is floor by default (50°)
 ASSETS = os.path.join(os.path.dirname(pymunk.__file__), "examples")
 
 

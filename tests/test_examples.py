@@ -69,9 +69,6 @@ def test_the_platformer_runs_600_frames_inside_its_walls(
     assert {State.GROUNDED, State.AIRBORNE} <= states
 
 
-@pytest.mark.xfail(
-    strict=True, reason="the capsule is pushed back off a 45° ramp (terrain work, issue 22)"
-)
 def test_the_player_walks_up_the_45_degree_ramp(
     six_hundred_frames: list[tuple[float, float, State]],
 ) -> None:
