@@ -151,7 +151,7 @@ def crate_on_the_head(mass: float, dt: float, substeps: int) -> tuple[World, Con
     return world, player, threshold
 
 
-@settings(deadline=None, max_examples=15)
+@settings(deadline=None, max_examples=15, derandomize=True)  # a world: the same cases each run
 @given(
     mass=MASS,
     dt=st.sampled_from([1 / 60, 1 / 120, 1 / 240]),
