@@ -142,6 +142,25 @@ class BodyRows:
         batch.set_space_bodies(space, _WRITE, self._out)
 
 
+def as_run(rows: NDArray[np.intp]) -> NDArray[np.intp] | slice:
+    """``rows`` as a slice when they are one ascending run (``a, a + 1, …``), else as they are:
+    the same rows, indexed without a gather (numpy takes a slice of a crowd's rows several times
+    faster than the rows one by one). Built once while the rows stay the same.
+
+    >>> as_run(np.array([3, 4, 5]))
+    slice(3, 6, None)
+    >>> as_run(np.array([3, 5])).tolist()
+    [3, 5]
+    """
+    k = len(rows)
+    if k == 0:
+        return rows
+    first = int(rows[0])
+    if first < 0 or not np.array_equal(rows, np.arange(first, first + k)):
+        return rows
+    return slice(first, first + k)
+
+
 def lookup(keys: NDArray[np.uintp], ids: NDArray[np.uintp]) -> NDArray[np.intp]:
     """Index of each of ``ids`` in the sorted array ``keys``, or −1 where absent.
 
@@ -233,7 +252,7 @@ class ForceWrites:
         self._buffer = batch.Buffer()
         self._id_bytes = b""
         self._for: NDArray[np.uintp] | None = None
-        self._at = np.zeros(0, dtype=np.intp)
+        self._at: NDArray[np.intp] | slice = np.zeros(0, dtype=np.intp)
 
     def write(
         self,
@@ -249,7 +268,7 @@ class ForceWrites:
         batch.get_space_bodies(space, _FORCES, buffer)
         raw = bytes(buffer.int_buf())
         if raw != self._id_bytes or self._for is not ids:
-            self._at = _rows_of(np.frombuffer(raw, dtype=np.uintp), ids)
+            self._at = as_run(_rows_of(np.frombuffer(raw, dtype=np.uintp), ids))
             self._id_bytes = raw
             self._for = ids
         rows = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 3)

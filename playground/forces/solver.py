@@ -18,7 +18,7 @@ import numpy as np
 import pymunk
 from numpy.typing import NDArray
 
-from playground._engine.batch import lookup
+from playground._engine.batch import as_run, lookup
 from playground.forces.contact_split import ContactSplit
 from playground.forces.ledger import ForceLedger
 from playground.forces.readings import BodyForces
@@ -107,7 +107,9 @@ class ForceSolver(TrackedRows):
         self._vsum = np.zeros((n, 3))
         self._seen = np.zeros(n, dtype=bool)
         self._xy = np.zeros((0, 2), dtype=np.intp)
-        self._block_cache: tuple[NDArray[np.uintp], NDArray[np.intp]] | None = None
+        self._block_cache: (
+            tuple[NDArray[np.uintp], NDArray[np.intp] | slice, NDArray[np.bool_] | None] | None
+        ) = None
         self._split.reset(self._keys, self._key_row)
         self._gather_cache: dict[
             int, tuple[NDArray[np.intp], NDArray[np.intp], NDArray[np.intp]]
@@ -271,10 +273,9 @@ class ForceSolver(TrackedRows):
         block = ledger.row_block()  # a crowd's forces, a row per body
         if block is not None and len(block[0]):
             ids, parts = block
-            at = self._block_rows(ids)
-            if (at < 0).any():
-                keep = at >= 0
-                at, parts = at[keep], parts[keep]
+            at, keep = self._block_rows(ids)
+            if keep is not None:
+                parts = parts[keep]
             # The same float operations as the loop above, row by row (each body once).
             passive[at, 0:2] += parts[:, 0:2]
             support[at, 0:2] += parts[:, 4:6]
@@ -309,15 +310,21 @@ class ForceSolver(TrackedRows):
             self._split_known = False
         return all_valid
 
-    def _block_rows(self, ids: NDArray[np.uintp]) -> NDArray[np.intp]:
-        """The tracked row of each of a block's ``ids`` (−1: not tracked), cached while the
-        block's ids are the same array (a crowd's, step after step)."""
+    def _block_rows(
+        self, ids: NDArray[np.uintp]
+    ) -> tuple[NDArray[np.intp] | slice, NDArray[np.bool_] | None]:
+        """The tracked rows of those of a block's ``ids`` that are tracked (a slice when they
+        are one run: a crowd tracked in the order it writes its rows) and which of the block's
+        rows they are (None: all), cached while the block's ids are the same array (a crowd's,
+        step after step)."""
         cached = self._block_cache
         if cached is None or cached[0] is not ids:
             pos = lookup(self._keys, ids)
             rows = np.where(pos >= 0, self._key_row[np.maximum(pos, 0)], -1).astype(np.intp)
-            cached = self._block_cache = (ids, rows)
-        return cached[1]
+            tracked = rows >= 0
+            keep = None if tracked.all() else tracked
+            cached = self._block_cache = (ids, as_run(rows if keep is None else rows[keep]), keep)
+        return cached[1], cached[2]
 
     def _xy_index(self) -> NDArray[np.intp]:
         """Flat indices (N, 2) of the x, y columns of (N, 3) rows, cached while N stays."""

@@ -439,3 +439,53 @@ def test_solver_arrays_are_finite() -> None:
     s = world.readings()
     for arr in (s.engine, s.support, s.specific, s.contact, s.constraint):
         assert np.isfinite(arr[s.valid]).all()
+
+
+@pytest.mark.parametrize(
+    "block",
+    [(0, 1, 2), (2, 0, 1), (0, 1, 2, 3), (3, 2, 1)],
+    ids=["tracked-order", "shuffled", "run-and-untracked", "shuffled-and-untracked"],
+)
+def test_a_block_of_rows_reads_as_entries_body_by_body(block: tuple[int, ...]) -> None:
+    """Law: forces entered as a block of rows (a crowd's) give the solver's readings the very
+    bits the same forces give entered body by body, whether the block's bodies are the tracked
+    rows in order (read as one slice), in another order, or include an untracked body."""
+    from playground.forces.batch import BatchBodies
+    from playground.forces.ledger import Category, ForceLedger, ForceRows, RowBodies
+
+    dt = 1.0 / 120.0
+    rng = np.random.default_rng(11)
+    forces = rng.normal(scale=50.0, size=(4, 3, 2))  # per body: passive, applied, support (N)
+    categories = (Category.PASSIVE, Category.APPLIED, Category.SUPPORT)
+
+    def readings(as_rows: bool) -> list[bytes]:
+        space = pymunk.Space()
+        space.gravity = (0.0, -G)
+        space.sleep_time_threshold = math.inf
+        bodies = [pymunk.Body(1.0 + i, 0.5 + i) for i in range(4)]
+        for i, b in enumerate(bodies):
+            b.velocity = (0.5 * i, -0.25 * i)
+            space.add(b, pymunk.Circle(b, 0.2))
+        tracked = BatchBodies(space, WorldConfig())
+        for b in bodies[:3]:
+            tracked.track(b)
+        ledger = ForceLedger()
+        chosen = [bodies[i] for i in block]
+        if as_rows:
+            total = np.array([0.0 + f[0] + f[1] + f[2] for f in forces[list(block)]])
+            parts = np.array([(0.0 + f).reshape(-1) for f in forces[list(block)]])
+            ids = np.array([b.id for b in chosen], dtype=np.uintp)
+            rows = ForceRows(RowBodies(chosen, ids), total, np.zeros(len(chosen)), parts)
+            ledger.add_rows(rows)
+        else:
+            for i, b in zip(block, chosen, strict=True):
+                ledger.add_all(b, [(*forces[i, k].tolist(), c) for k, c in enumerate(categories)])
+        ledger.flush()
+        tracked.before_step(None, 1)
+        space.step(dt)
+        tracked.after_substep(last=True, stamp=1, rescaled=False)
+        tracked.finish(dt=dt, substeps=1, damping=1.0, space_gravity=(0.0, -G), ledger=ledger)
+        table = tracked.table()
+        return [a.tobytes() for a in (table.engine, table.support, table.passive, table.applied)]
+
+    assert readings(as_rows=True) == readings(as_rows=False)
