@@ -15,6 +15,12 @@ end cap, normal 40° off, while the chord under the probe is 7 cm nearer).
 call: the same query and callback per probe, without a Python call of the probe's own between
 them.
 
+:class:`Sweeps` runs the probes of a crowd in one call and answers in arrays. Where the optional
+compiled helper was built on install (:mod:`playground._engine._nearest`, a small C extension:
+the same Chipmunk query with a C callback that keeps what the Python one keeps), no Python runs
+between the queries; without a compiler it runs :func:`nearest_each`, the same answers.
+:data:`QUERIES_BY` says which path serves.
+
 Like :mod:`playground._engine.raw` this reaches into pymunk's private ``_chipmunk_cffi`` (pymunk's
 major version is pinned). Where the platform refuses a cffi callback (memory both writable and
 executable), :class:`Sweep` answers through :func:`nearest_by_pymunk` instead.
@@ -32,17 +38,24 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from typing import Any
+from dataclasses import dataclass
+from typing import Any, Final, Literal
 
+import numpy as np
 import pymunk
+from numpy.typing import NDArray
 from pymunk._chipmunk_cffi import ffi, lib
 
 from playground._engine.query import NearestQuery, from_handle, is_sensor, shape_data
 from playground._engine.raw import c_callback
 
 __all__ = [
+    "NO_HIT",
+    "QUERIES_BY",
     "Hit",
+    "Hits",
     "Sweep",
+    "Sweeps",
     "face_normal",
     "nearest_by_pymunk",
     "nearest_each",
@@ -65,6 +78,61 @@ def _keep_nearest(shape: Any, point: Any, normal: Any, alpha: float, data: Any) 
 
 
 _callback = c_callback("cpSpaceSegmentQueryFunc", _keep_nearest)
+
+# What the compiled helper declares of Chipmunk (playground/_engine/_nearest.c), as pymunk's cffi
+# names it: the helper is used only if pymunk declares the very same, so a pymunk whose types
+# differ falls back to the callback instead of calling through a wrong signature.
+_DECLARED_IN_C: Final = (
+    (
+        "void(*)(struct cpSpace *, struct cpVect, struct cpVect, double, struct cpShapeFilter, "
+        "void(*)(struct cpShape *, struct cpVect, struct cpVect, double, void *), void *)"
+    ),
+    "unsigned char(*)(struct cpShape *)",
+    (("group", "uintptr_t"), ("categories", "unsigned int"), ("mask", "unsigned int")),
+    (("x", "double"), ("y", "double")),
+)
+
+
+def _declared() -> tuple[Any, ...]:
+    """pymunk's cffi declarations of what the compiled helper calls and passes."""
+    return (
+        ffi.typeof(lib.cpSpaceSegmentQuery).cname,
+        ffi.typeof(lib.cpShapeGetSensor).cname,
+        tuple((n, f.type.cname) for n, f in ffi.typeof("cpShapeFilter").fields),
+        tuple((n, f.type.cname) for n, f in ffi.typeof("cpVect").fields),
+    )
+
+
+def _address(pointer: Any) -> int:
+    """A cffi pointer (or a C function of pymunk's lib) as an int."""
+    return int(ffi.cast("uintptr_t", pointer))
+
+
+def _compiled_helper() -> Callable[..., int] | None:
+    """The compiled helper's ``segment_queries``, if it was built and matches pymunk's
+    declarations, else None."""
+    try:
+        from playground._engine import _nearest
+    except ImportError:
+        return None
+    return _nearest.segment_queries if _declared() == _DECLARED_IN_C else None
+
+
+_segment_queries = _compiled_helper()
+_QUERY_ADDRESS = _address(ffi.addressof(lib, "cpSpaceSegmentQuery"))
+_SENSOR_ADDRESS = _address(ffi.addressof(lib, "cpShapeGetSensor"))
+
+QUERIES_BY: Final[Literal["compiled", "callback", "pymunk"]] = (
+    "compiled"
+    if _segment_queries is not None
+    else "callback"
+    if _callback is not None
+    else "pymunk"
+)
+"""How :meth:`Sweeps.nearest` runs its queries, as the module was imported: ``"compiled"``
+(the helper built on install, one C call for all), ``"callback"`` (:func:`nearest_each`: the
+query with the Python callback, one Python call a query), ``"pymunk"`` (pymunk's public query,
+where the platform refuses cffi callbacks). All three give the same answers, bit for bit."""
 
 
 def nearest_by_pymunk(
@@ -157,6 +225,124 @@ def nearest_each(
             shape = shapes[shape_c] = from_handle(shape_data(shape_c))
         append((shape, best[2], best[3], best[4], best[5]))
     return out
+
+
+NO_HIT: Final = -1
+""":attr:`Hits.shape` of a query that hit nothing."""
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Hits:
+    """The nearest hits of many queries, the k-th entry of each array the k-th query's."""
+
+    shape: NDArray[np.intp]
+    """Which shape the query hit, as an index into :attr:`shapes`; :data:`NO_HIT` if none."""
+    shapes: list[pymunk.Shape]
+    """The distinct shapes hit, each once, in the order first hit."""
+    point_normal: NDArray[np.float64]
+    """Four rows: the hit point's x and y (m) and the surface normal's x and y there (unit);
+    NaN where nothing was hit."""
+
+    @property
+    def x(self) -> NDArray[np.float64]:
+        """The hit point's x, m."""
+        row: NDArray[np.float64] = self.point_normal[0]
+        return row
+
+    @property
+    def y(self) -> NDArray[np.float64]:
+        """The hit point's y, m."""
+        row: NDArray[np.float64] = self.point_normal[1]
+        return row
+
+    @property
+    def nx(self) -> NDArray[np.float64]:
+        """The surface normal's x at the hit point (unit)."""
+        row: NDArray[np.float64] = self.point_normal[2]
+        return row
+
+    @property
+    def ny(self) -> NDArray[np.float64]:
+        """The surface normal's y at the hit point (unit)."""
+        row: NDArray[np.float64] = self.point_normal[3]
+        return row
+
+
+class Sweeps:
+    """Many probes (:class:`Sweep`, each of its space and filter), queried in one call: a
+    crowd's, made once while its members stay the same.
+
+    >>> space = pymunk.Space()
+    >>> floor = pymunk.Segment(space.static_body, (-5.0, 0.0), (5.0, 0.0), 0.0)
+    >>> space.add(floor)
+    >>> probes = Sweeps([Sweep(space, pymunk.ShapeFilter())] * 3)
+    >>> rows = np.array([0, 2])                             # probes 0 and 2
+    >>> hits = probes.nearest(rows, [0.0, 1.0], [1.0, 1.0], [0.0, 1.0], [-1.0, 2.0], 0.25)  # m
+    >>> hits.shape.tolist(), hits.shapes == [floor], hits.x.tolist()[0], hits.ny.tolist()[0]
+    ([0, -1], True, 0.0, 1.0)
+    """
+
+    __slots__ = ("_filters", "_probes", "_spaces")
+
+    def __init__(self, probes: Sequence[Sweep]) -> None:
+        self._probes = list(probes)
+        # The C side of each probe, kept alive by the probe (its space and its filter).
+        self._spaces = np.array([_address(p._space_c) for p in probes], dtype=np.uintp)
+        self._filters = np.array([_address(p._filter_c) for p in probes], dtype=np.uintp)
+
+    def __len__(self) -> int:
+        return len(self._probes)
+
+    def __getitem__(self, i: int) -> Sweep:
+        """The ``i``-th probe."""
+        return self._probes[i]
+
+    def nearest(
+        self,
+        rows: NDArray[np.intp],
+        x0: Any,
+        y0: Any,
+        x1: Any,
+        y1: Any,
+        radius: Any,
+    ) -> Hits:
+        """For each k, ``probes[rows[k]].nearest(x0[k], y0[k], x1[k], y1[k], radius[k])`` (m;
+        ``radius`` may be one float for all), as :class:`Hits`: the same answers, bit for bit,
+        whichever path serves (:data:`QUERIES_BY`)."""
+        rows = np.ascontiguousarray(rows, dtype=np.intp)
+        m = len(rows)
+        x0, y0, x1, y1 = (np.ascontiguousarray(v, dtype=np.float64) for v in (x0, y0, x1, y1))
+        if isinstance(radius, float | int):
+            radius = np.full(m, float(radius))
+        radius = np.ascontiguousarray(radius, dtype=np.float64)
+        which = np.empty(m, dtype=np.intp)
+        points = np.empty((4, m))
+        if _segment_queries is not None:
+            found = np.empty(m, dtype=np.uintp)
+            distinct = _segment_queries(
+                _QUERY_ADDRESS, _SENSOR_ADDRESS, self._spaces, self._filters, rows,
+                x0, y0, x1, y1, radius, which, found, points,
+            )  # fmt: skip
+            # The Shape of each cpShape* hit, looked up once a call; not kept across calls: a
+            # freed shape's memory may hold another shape later.
+            shapes = [
+                from_handle(shape_data(ffi.cast("cpShape *", p))) for p in found[:distinct].tolist()
+            ]
+            return Hits(which, shapes, points)
+        probes = self._probes
+        hits = nearest_each(
+            [probes[r] for r in rows.tolist()],
+            x0.tolist(), y0.tolist(), x1.tolist(), y1.tolist(), radius.tolist(),
+        )  # fmt: skip
+        index: dict[pymunk.Shape, int] = {}
+        for k, hit in enumerate(hits):
+            if hit is None:
+                which[k] = NO_HIT
+                points[:, k] = math.nan
+                continue
+            which[k] = index.setdefault(hit[0], len(index))
+            points[:, k] = hit[1:]
+        return Hits(which, list(index), points)
 
 
 def nearest_where(
