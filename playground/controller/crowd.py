@@ -91,8 +91,9 @@ _Sensed: Any = Sensed
 _BodyState: Any = BodyState
 
 
-def _plain_move(intent: Intent) -> float | None:
-    """The intent's move if it asks for nothing else (no jump, grab, push or switch)."""
+def _plain_move(intent: Intent) -> float:
+    """The intent's move if it asks for nothing else (no jump, grab, push or switch), else
+    NaN."""
     if (
         intent.jump
         or intent.grab
@@ -101,7 +102,7 @@ def _plain_move(intent: Intent) -> float | None:
         or intent.restore_gravity
         or intent.nullify is not None
     ):
-        return None
+        return math.nan
     return intent.move
 
 
@@ -141,6 +142,29 @@ class _StairsArrays:
         self.cos_slope = np.array([math.cos(c.max_slope) for c in configs])
 
 
+class _Rows:
+    """Writes a config group's rows of the step's arrays into ``out`` (name → array, one
+    element or row per member): with one group of every member its arrays themselves, else
+    its rows of arrays of all members (zeros until filled)."""
+
+    __slots__ = ("_n", "_out", "_whole")
+
+    def __init__(self, out: dict[str, Any], n: int, groups: list[_Group]) -> None:
+        self._out = out
+        self._n = n
+        rows = groups[0].rows if len(groups) == 1 else None
+        self._whole = isinstance(rows, slice) and rows == slice(0, n)
+
+    def __call__(self, key: str, rows: slice | NDArray[np.intp], value: NDArray[Any]) -> None:
+        if self._whole:
+            self._out[key] = value
+            return
+        a = self._out.get(key)
+        if a is None:
+            a = self._out[key] = np.zeros((self._n, *value.shape[1:]), dtype=value.dtype)
+        a[rows] = value[rows]
+
+
 class Crowd:
     """The controllers of one world (:meth:`of`), run as one above :attr:`min_actors`."""
 
@@ -154,7 +178,8 @@ class Crowd:
         """Whether the crowd's hook runs the members (else each runs its own)."""
         self._poses = Poses()
         self._arbiters = pbatch.Buffer()
-        self._plain: dict[int, tuple[Intent, float | None]] = {}
+        self._intents: list[Intent] = []
+        self._moves = np.zeros(0)
         self._configs: list[ControllerConfig] = []
         self._groups: list[_Group] = []
         self._rows_version = -1
@@ -320,22 +345,16 @@ class Crowd:
         dt = wc.dt
         # -- who may go batch: intents, laws, states ---------------------------------------------
         default_laws = members[0].default_laws
-        plain = self._plain
-        if len(plain) > 2 * n + 64:
-            # A source that makes a new intent every step (a keyboard) would grow the cache
-            # by its intents, each kept alive by its entry.
-            plain.clear()
-        moves: list[float] = []
-        for c in members:
-            intent = c.intent
-            cached = plain.get(id(intent))
-            if cached is None or cached[0] is not intent:
-                cached = (intent, _plain_move(intent))
-                plain[id(intent)] = cached
-            m = cached[1]
-            # NaN marks a member that runs scalar (a move is within [-1, 1]).
-            moves.append(math.nan if m is None or c.laws is not default_laws or c.removed else m)
-        move = np.array(moves)
+        # Each member's intent as a plain move (NaN: it asks for more), computed again only when
+        # an intent changed (a patrol keeps its intent between turns; a keyboard makes new ones).
+        intents = [c.intent for c in members]
+        if len(intents) != len(self._intents) or not all(map(operator.is_, intents, self._intents)):
+            self._intents = intents
+            self._moves = np.array([_plain_move(i) for i in intents], dtype=np.float64)
+        # NaN also marks a member under other laws, or removed: it runs scalar (a move is within
+        # [-1, 1]).
+        lawful = [c.laws is default_laws and not c.removed for c in members]
+        move = np.where(lawful, self._moves, math.nan)
         ok = (self._code > 0) & ~np.isnan(move)
         move[~ok] = 0.0
         self._regroup()
@@ -546,13 +565,12 @@ class Crowd:
         cur["push_x"][done] = 0.0
         cur["push_y"][done] = 0.0
         self._code[done] = nxt["code"][done]
-        on_ground = nxt["on_ground"].tolist()
         views, last_ground = self._views, self._last_ground
         for i in done.tolist():
             members[i].stale = self
             views[i] = nxt
-            if on_ground[i]:
-                last_ground[i] = nxt  # this step's hit, built when read
+        for i in np.flatnonzero(ok & nxt["on_ground"]).tolist():
+            last_ground[i] = nxt  # this step's hit, built when read
 
     def _row_bodies(self, rows: NDArray[np.intp]) -> RowBodies:
         """The bodies of the members ``rows``: the last step's again while they are the same."""
@@ -717,52 +735,29 @@ class Crowd:
         n = len(move)
         cur = self.cur
         nx, ny = hits.normal
-        out: dict[str, Any] = {
-            k: np.zeros(n)
-            for k in (
-                "fx",
-                "fy",
-                "torque",
-                "hover_x",
-                "hover_y",
-                "drive_x",
-                "drive_y",
-                "balance",
-                "short",
-                "saturated",
-                "grounded_at",
-            )
-        }
-        out["parts"] = np.zeros((n, 6))
-        out["code"] = np.zeros(n, dtype=np.int8)
-        out["on_ground"] = np.zeros(n, dtype=bool)
-        out["walkable"] = np.zeros(n, dtype=bool)
-        out["hover_on"] = np.zeros(n, dtype=bool)
-        out["drive_on"] = np.zeros(n, dtype=bool)
-        out["steer_on"] = np.zeros(n, dtype=bool)
-        out["locked"] = np.zeros(n, dtype=bool)
         ux, uy = sensed.up
-        out["ux"], out["uy"] = ux, uy
         lx, ly = level
-        out["lx"], out["ly"] = lx, ly
         grounded_before = self._code == 1
+        out: dict[str, Any] = {"ux": ux, "uy": uy, "lx": lx, "ly": ly}
         out["load"] = np.maximum(0.0, -(cur["push_x"] * ux + cur["push_y"] * uy)) + 0.0
+        # One config for every member (the usual crowd) takes each group's arrays as they are;
+        # several fill their rows of arrays of all members.
+        put = _Rows(out, n, self._groups)
         state = ControllerState(GROUNDED)
         for g in self._groups:
             cfg = g.config
             r = g.rows
             walkable = (nx * lx + ny * ly >= g.cos_slope) & hit
-            on_ground = walkable  # not rising: a batch member never is
-            ok[r] &= ~(hit & ~walkable)[r] & ~(grounded_before & ~on_ground)[r]
+            grounded = walkable  # on walkable ground, and not rising: a batch member never is
+            ok[r] &= ~(hit & ~walkable)[r] & ~(grounded_before & ~grounded)[r]
             short = cur["short"]
             saturated = np.where(short == 1.0, cur["saturated"] + dt, 0.0)
             saturated = np.where(short < 0.0, cur["saturated"], saturated)
-            grounded = on_ground
-            out["code"][r] = np.where(grounded, 1, 2)[r]
-            out["grounded_at"][r] = np.where(grounded, t, cur["grounded_at"])[r]
-            out["saturated"][r] = saturated[r]
-            out["on_ground"][r] = on_ground[r]
-            out["walkable"][r] = walkable[r]
+            put("code", r, np.where(grounded, 1, 2).astype(np.int8))
+            put("grounded_at", r, np.where(grounded, t, cur["grounded_at"]))
+            put("saturated", r, saturated)
+            put("on_ground", r, grounded)
+            put("walkable", r, walkable)
             hover = _law.hover(sensed, state, hits, cfg, ARRAYS)
             hover = np.where(grounded, hover, 0.0)
             hvx, hvy = hover * nx, hover * ny
@@ -772,41 +767,39 @@ class Crowd:
             # ops.vector's zero: f = 0 (a unit direction has a component of at least 0.7).
             drive_on = grounded & ((dvx != 0.0) | (dvy != 0.0))
             steer_on = ~grounded & (move != 0.0) & ((svx != 0.0) | (svy != 0.0))
-            # The same additions as add_all: 0.0, then each force in order.
+            # The same additions as add_all: 0.0, then each force in order (support, then
+            # applied: a member has one or the other).
             sx = 0.0 + np.where(hover_on, hvx, 0.0) + np.where(drive_on, dvx, 0.0)
             sy = 0.0 + np.where(hover_on, hvy, 0.0) + np.where(drive_on, dvy, 0.0)
-            ax = 0.0 + np.where(steer_on, svx, 0.0)
-            ay = 0.0 + np.where(steer_on, svy, 0.0)
-            fx = 0.0 + np.where(hover_on, hvx, 0.0) + np.where(drive_on, dvx, 0.0)
-            fx = fx + np.where(steer_on, svx, 0.0)
-            fy = 0.0 + np.where(hover_on, hvy, 0.0) + np.where(drive_on, dvy, 0.0)
-            fy = fy + np.where(steer_on, svy, 0.0)
+            ax = np.where(steer_on, svx, 0.0)
+            ay = np.where(steer_on, svy, 0.0)
+            put("fx", r, sx + ax)
+            put("fy", r, sy + ay)
+            z = np.zeros(n)
+            put("parts", r, np.stack([z, z, 0.0 + ax, 0.0 + ay, sx, sy], axis=1))
             if cfg.lock_rotation:
-                torque = np.zeros(n)
-                out["short"][r] = -1.0
-                out["locked"][r] = True
+                put("torque", r, np.zeros(n))
+                put("balance", r, np.zeros(n))
+                put("short", r, np.full(n, -1.0))
+                put("locked", r, np.ones(n, dtype=bool))
             else:
                 # Relative to the ground's spin (0 off the ground: the same subtraction).
                 need = _law.balance(sensed, hits, cfg, ARRAYS)
                 budget = cfg.balance_budget(sensed.body.mass)
                 torque = ARRAYS.max(-budget, ARRAYS.min(budget, need))
                 touching = grounded  # nothing else touches a batch member
-                out["short"][r] = np.where((np.abs(need) > budget) & touching, 1.0, 0.0)[r]
-            out["balance"][r] = torque[r]
-            out["torque"][r] = (0.0 + torque)[r]
-            out["fx"][r], out["fy"][r] = fx[r], fy[r]
-            out["parts"][r, 2], out["parts"][r, 3] = ax[r], ay[r]
-            out["parts"][r, 4], out["parts"][r, 5] = sx[r], sy[r]
-            out["hover_x"][r], out["hover_y"][r] = (
-                np.where(grounded, hvx, 0.0)[r],
-                np.where(grounded, hvy, 0.0)[r],
-            )
-            dx = np.where(grounded, dvx, np.where(move != 0.0, svx, 0.0))
-            dy = np.where(grounded, dvy, np.where(move != 0.0, svy, 0.0))
-            out["drive_x"][r], out["drive_y"][r] = dx[r], dy[r]
-            out["hover_on"][r] = hover_on[r]
-            out["drive_on"][r] = (drive_on | steer_on)[r]
-            out["steer_on"][r] = steer_on[r]
+                put("short", r, ((np.abs(need) > budget) & touching).astype(np.float64))
+                put("balance", r, torque)
+                put("torque", r, 0.0 + torque)
+                put("locked", r, np.zeros(n, dtype=bool))
+            put("hover_x", r, np.where(grounded, hvx, 0.0))
+            put("hover_y", r, np.where(grounded, hvy, 0.0))
+            moving = move != 0.0
+            put("drive_x", r, np.where(grounded, dvx, np.where(moving, svx, 0.0)))
+            put("drive_y", r, np.where(grounded, dvy, np.where(moving, svy, 0.0)))
+            put("hover_on", r, hover_on)
+            put("drive_on", r, drive_on | steer_on)
+            put("steer_on", r, steer_on)
         cap = RUNAWAY_FORCE if self.world.config.guard else math.inf
         t_cap = _RUNAWAY_TORQUE if self.world.config.guard else math.inf
         within = (

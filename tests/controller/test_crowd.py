@@ -243,8 +243,8 @@ def test_a_crowd_walks_stairs_as_it_does_one_by_one() -> None:
 
 
 def test_fresh_intents_every_step_do_not_pile_up_in_the_crowd() -> None:
-    """A source that makes a new Intent every step (as a keyboard does): the crowd's cache of
-    each intent's plain move stays bounded by its members, not by the steps run."""
+    """A source that makes a new Intent every step (as a keyboard does): the crowd keeps the
+    intents of its members' last step only, not of every step run."""
 
     class Fresh:
         def intent(self, t: float) -> Intent:
@@ -257,9 +257,9 @@ def test_fresh_intents_every_step_do_not_pile_up_in_the_crowd() -> None:
     crowd = Crowd.of(world)
     for _ in range(40):
         world.step()
-    # Cleared once past 2·30 + 64 entries, then one step adds at most 30 (without the bound:
-    # 40 × 30 = 1 200).
-    assert crowd.active and 0 < len(crowd._plain) <= 3 * 30 + 64
+    # One per member (a cache of every intent seen would hold 40 × 30 = 1 200).
+    assert crowd.active and len(crowd._intents) == 30
+    assert crowd._moves.tolist() == [0.25] * 30
 
 
 def test_the_crowds_tread_ahead_misses_no_step_up(monkeypatch: pytest.MonkeyPatch) -> None:
