@@ -57,6 +57,17 @@ class FilterChain:
             y = stage.filter(y, dt)
         return shaped(y, form)
 
+    def filter_rows(self, x: FloatArray, dt: float) -> FloatArray:
+        """:meth:`filter` for (N, k) float rows: the same output and state, each stage taking
+        its own shortcut (``filter_rows``) when every row of ``x`` is finite (a row that is not
+        is held in every stage, as :meth:`filter` holds it)."""
+        if not np.isfinite(x).all():
+            return self.filter(x, dt)
+        y = x
+        for stage in self._stages:
+            y = stage.filter_rows(y, dt)
+        return y
+
     def reset(self) -> None:
         """Reset every stage."""
         for stage in self._stages:

@@ -155,24 +155,6 @@ class OneEuroFilter(RowFilter):
         dev += xh
         return dev, dxh_new
 
-    def filter_rows(self, x: FloatArray, dt: float) -> FloatArray:
-        """:meth:`filter` for (N, k) rows of the shape the filter holds, every row started and
-        ``dt`` valid: the same output without the generic bookkeeping (a world's perceived
-        gravity calls it every step); any other sample goes through :meth:`filter`.
-
-        >>> f = OneEuroFilter(beta=0.1)
-        >>> _ = f.filter(np.array([[0.0, 0.0], [1.0, 1.0]]), dt=0.01)
-        >>> g = OneEuroFilter(beta=0.1)
-        >>> _ = g.filter(np.array([[0.0, 0.0], [1.0, 1.0]]), dt=0.01)
-        >>> x = np.array([[0.5, -0.5], [2.0, 1.0]])
-        >>> bool((f.filter_rows(x, 0.01) == g.filter(x, 0.01)).all())
-        True
-        """
-        if self._all_init and x.shape == self._shape and dt > 0.0 and math.isfinite(dt):
-            with np.errstate(all="ignore"):
-                return self._advance_all(x, dt)
-        return self.filter(x, dt)
-
     def _advance_all(self, x: FloatArray, dt: float) -> FloatArray:
         xh, dxh = self._step(self._layout.pack(x), self._xh, self._dxh, dt)
         if np.isfinite(xh.view(np.float64)).all():

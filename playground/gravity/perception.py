@@ -112,12 +112,7 @@ class PerceivedGravity:
         if all_valid is None:
             all_valid = bool(valid.all())
         sample = -specific if all_valid else np.where(valid[:, None], -specific, np.nan)
-        one_euro = self._one_euro
-        if self._filter is one_euro and sample.shape[1:] == (2,):
-            out = np.ascontiguousarray(one_euro.filter_rows(sample, dt))
-        else:
-            out = np.ascontiguousarray(self._filter.filter(sample, dt), dtype=np.float64)
-        out = out.reshape(-1, 2)
+        out = np.ascontiguousarray(self._filter.filter_rows(sample, dt)).reshape(-1, 2)
         # Rows as complex numbers x + iy: magnitude and direction in whole contiguous operations
         # (an (N, 2) slice costs numpy several times more).
         z = out.view(np.complex128).ravel()
