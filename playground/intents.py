@@ -133,13 +133,18 @@ class Patrol:
 
     speed: float = param(0.5, doc="Move input, 0 … 1.", ge=0.0, le=1.0)
     period: float = param(4.0, doc="One walk there and back.", unit="s", gt=0.0)
+    # Its two intents, made once (intents are frozen): a step only picks one. Not parameters.
+    _there: Intent = field(default=IDLE, init=False, repr=False, compare=False)
+    _back: Intent = field(default=IDLE, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         check(self)
+        object.__setattr__(self, "_there", _moving(self.speed))
+        object.__setattr__(self, "_back", _moving(-self.speed))
 
     def intent(self, t: float) -> Intent:
         phase = (t % self.period) / self.period
-        return _moving(self.speed if phase < 0.5 else -self.speed)
+        return self._there if phase < 0.5 else self._back
 
 
 @functools.lru_cache(maxsize=64)

@@ -53,9 +53,11 @@ class _Deriving(ModelMetaclass):
             only = namespace.get("__only__")
             hints = typing.get_type_hints(core)
             for f in dataclasses.fields(core):
-                if (only is not None and f.name not in only) or f.name in namespace[
-                    "__annotations__"
-                ]:
+                if (
+                    SPEC not in f.metadata  # the core's own (a cache), not a parameter
+                    or (only is not None and f.name not in only)
+                    or f.name in namespace["__annotations__"]
+                ):
                     continue
                 annotation, info = _field(f, hints[f.name])
                 namespace["__annotations__"][f.name] = annotation
