@@ -61,7 +61,6 @@ from playground.controller.states import AIRBORNE, GROUNDED, ControllerState, Tr
 from playground.forces.ledger import Category, ForceRows, RowBodies
 from playground.intents import Intent
 from playground.limits import MAX_COORDINATE, RUNAWAY_FORCE
-from playground.vec import Vec
 from playground.world.schedule import Stage
 from playground.world.world import World
 
@@ -89,6 +88,8 @@ _law: Any = law
 _GroundHit: Any = GroundHit
 _Sensed: Any = Sensed
 _BodyState: Any = BodyState
+_lean: Any = lean
+_effort_on: Any = effort_on
 
 
 def _plain_move(intent: Intent) -> float:
@@ -186,6 +187,7 @@ class Crowd:
         self._rows = np.zeros(0, dtype=np.intp)
         self._gravity_key: tuple[int, float, float] | None = None
         self._g: tuple[Any, ...] = ()
+        self._g_norm: tuple[Any, NDArray[np.float64]] = (None, np.zeros(0))
         self._resize()
 
     @classmethod
@@ -392,17 +394,24 @@ class Crowd:
             dot = gux * pux + guy * puy
             cross = gux * puy - guy * pux
             inside = (dot > 0.0) & (np.abs(cross) < self._sin_lean() * (1.0 - 1e-9))
-            # Beyond it (leaning into its step), the very function in floats, member by member.
-            for i in np.flatnonzero(leaned & ~inside & ok).tolist():
-                c = members[i]
-                # Standing, or pushed within PUSH_ECHO, no lean of its own (sensing.leaning); a
-                # member touching anything now runs its own step (below).
-                quiet = c.intent.move == 0.0 or t - cur["touched_at"][i] <= PUSH_ECHO
-                own = ZERO if quiet else self._effort(c, i)
-                weight = raw.mass(self._handles[i]) * math.hypot(gx[i], gy[i])
-                level = (float(gux[i]), float(guy[i]))
-                perceived = (float(pux[i]), float(puy[i]))
-                ux[i], uy[i] = lean(perceived, level, own, weight, c.config.max_lean)
+            # Beyond it (leaning into its step), the very function on arrays.
+            rows = np.flatnonzero(leaned & ~inside & ok)
+            if len(rows):
+                # Standing, or pushed within PUSH_ECHO, no lean of its own (sensing.leaning);
+                # a member touching anything now runs its own step (below).
+                own = (move[rows] != 0.0) & ~(t - cur["touched_at"][rows] <= PUSH_ECHO)
+                handles = self._handles
+                mass = np.fromiter(
+                    (raw.mass(handles[i]) for i in rows.tolist()), np.float64, len(rows)
+                )
+                ux[rows], uy[rows] = _lean(
+                    (pux[rows], puy[rows]),
+                    (gux[rows], guy[rows]),
+                    self._efforts(rows, own),
+                    mass * self._weight_per_kg()[rows],
+                    self._max_lean()[rows],
+                    ARRAYS,
+                )
             lx = np.where(leaned, gux, ux)
             ly = np.where(leaned, guy, uy)
         else:
@@ -665,19 +674,58 @@ class Crowd:
             self._rows_version = world.tracked_version
         return self._rows
 
-    def _effort(self, c: Controller, i: int) -> Vec:
-        """Member ``i``'s legs' effort in its last step (sensing.effort), from the arrays of
-        its last batch step without building its readings, or from its own scalar step's."""
-        if c.stale is not self:
-            return effort(c.last_forces.drive, c.sensed)
-        view = self._views[i]
-        drive = (
-            (float(view["drive_x"][i]), float(view["drive_y"][i])) if view["drive_on"][i] else ZERO
+    def _efforts(
+        self, rows: NDArray[np.intp], own: NDArray[np.bool_]
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The legs' effort in their last step (sensing.effort) of the members ``rows`` where
+        ``own``, else 0, N: on arrays, from the arrays of each one's last batch step without
+        building its readings (the members of one step at once), or from its own scalar
+        step's (then it is no longer ``stale``)."""
+        k = len(rows)
+        ex, ey = np.zeros(k), np.zeros(k)
+        picked = rows.tolist()
+        members = [self.members[i] for i in picked]
+        views = [self._views[i] for i in picked]
+        fresh = own & np.array(
+            [c.stale is self and v is not None for c, v in zip(members, views, strict=True)],
+            dtype=bool,
         )
-        _, _, nx, ny, *_ = view["hits"]
-        normal = None if view["ground"][i] is None else (float(nx[i]), float(ny[i]))
-        body, _, _, _, vgx, vgy, *_ = view["sensed"]
-        return effort_on(drive, normal, (float(vgx[i]), float(vgy[i])), float(body.mass[i]))
+        for j in np.flatnonzero(own & ~fresh).tolist():
+            c = members[j]
+            ex[j], ey[j] = effort(c.last_forces.drive, c.sensed)
+        # The rows of one batch step at a time (all of them the last step's, but for a few).
+        while fresh.any():
+            view = views[int(np.argmax(fresh))]
+            at = np.flatnonzero(fresh & np.array([v is view for v in views], dtype=bool))
+            fresh[at] = False
+            r = rows[at]
+            drive_on = view["drive_on"][r]
+            drive = (
+                np.where(drive_on, view["drive_x"][r], 0.0),
+                np.where(drive_on, view["drive_y"][r], 0.0),
+            )
+            _, _, nx, ny, *_ = view["hits"]
+            ground = view["ground"]
+            found = np.array([ground[i] is not None for i in r.tolist()], dtype=bool)
+            body, _, _, _, gx, gy, *_ = view["sensed"]
+            ex[at], ey[at] = _effort_on(
+                drive, (nx[r], ny[r]), (gx[r], gy[r]), body.mass[r], ARRAYS, found & drive_on
+            )
+        return ex, ey
+
+    def _weight_per_kg(self) -> NDArray[np.float64]:
+        """Each member's |g| (``math.hypot``, as its own step), m/s²: read again with the
+        gravity (:meth:`_gravity`)."""
+        if self._g_norm[0] is not self._g:
+            self._g_norm = (self._g, ARRAYS.hypot(self._g[0], self._g[1]))
+        return self._g_norm[1]
+
+    def _max_lean(self) -> NDArray[np.float64]:
+        """Each member's max_lean, rad, by its config group."""
+        out = np.zeros(len(self.members))
+        for g in self._groups:
+            out[g.rows] = g.config.max_lean
+        return out
 
     def _sin_lean(self) -> NDArray[np.float64]:
         """Each member's sin(max_lean), by its config group."""

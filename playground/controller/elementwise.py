@@ -5,13 +5,20 @@ a law written over ``ops`` serves one controller in floats and a crowd in arrays
 ``ARRAYS.max(a, b)`` is Python's ``max(a, b)`` elementwise — ``a`` unless ``b > a`` — not
 ``np.maximum``, which gives −0.0 for ``max(0.0, −0.0)``; ``ARRAYS.atan2`` is ``math.atan2``
 element by element, not ``np.arctan2``, whose SIMD loop on a CPU with AVX-512 differs from libm
-in the last bit (``tests/controller/test_elementwise.py`` checks both).
+in the last bit, and ``ARRAYS.hypot`` is ``math.hypot``'s, not ``np.hypot``'s (which rounds
+otherwise); ``np.cos`` and ``np.sin`` are libm's (``tests/controller/test_elementwise.py``
+checks each).
+
+A branch of a law becomes :meth:`Ops.where` (a select, row by row), and its early return a
+shortcut taken where :meth:`Ops.all` rows agree: one row for floats.
 
 >>> FLOATS.max(0.0, -0.0), FLOATS.unless(True, 3.0), FLOATS.vector(0.0, 0.6, 0.8)
 (0.0, 0.0, (0.0, 0.0))
 >>> import numpy as np
 >>> ARRAYS.max(np.array([0.0, 1.0]), np.array([-0.0, 2.0])).tolist()
 [0.0, 2.0]
+>>> FLOATS.where(False, 1.0, 2.0), ARRAYS.where(np.array([True, False]), 1.0, 2.0).tolist()
+(2.0, [1.0, 2.0])
 """
 
 from __future__ import annotations
@@ -36,7 +43,20 @@ class Ops:
     min: Any = staticmethod(min)
     """``a`` unless ``b < a`` (Python's ``min(a, b)``)."""
     atan2: Any = staticmethod(math.atan2)
-    """The angle of (x, y), rad."""
+    """The angle of (x, y), rad (``atan2(y, x)``)."""
+    hypot: Any = staticmethod(math.hypot)
+    """The length of (x, y)."""
+    cos: Any = staticmethod(math.cos)
+    """The cosine of an angle, rad."""
+    sin: Any = staticmethod(math.sin)
+    """The sine of an angle, rad."""
+    all: Any = staticmethod(bool)
+    """Whether ``cond`` holds in every row (one row for floats)."""
+
+    @staticmethod
+    def where(cond: Any, a: Any, b: Any) -> Any:
+        """``a`` where ``cond``, else ``b``."""
+        return a if cond else b
 
     @staticmethod
     def unless(cond: Any, x: Any) -> Any:
@@ -69,12 +89,30 @@ def _atan2(y: Any, x: Any) -> Any:
     return np.array(list(flat), dtype=np.float64).reshape(yb.shape)
 
 
+def _hypot(x: Any, y: Any) -> Any:
+    # math.hypot on each pair: CPython's own correctly rounded sum of squares, which np.hypot
+    # (libm's hypot) misses in the last bit for about one pair in 170.
+    xb, yb = np.broadcast_arrays(x, y)
+    flat = map(math.hypot, xb.ravel().tolist(), yb.ravel().tolist())
+    return np.array(list(flat), dtype=np.float64).reshape(xb.shape)
+
+
 class _ArrayOps(Ops):
     __slots__ = ()
 
     max = staticmethod(_max)
     min = staticmethod(_min)
     atan2 = staticmethod(_atan2)
+    hypot = staticmethod(_hypot)
+    # numpy 2.4's float64 cos and sin give libm's bits here, unlike its arctan2 (the test
+    # checks them, over all floats and densely over the angles a law turns by).
+    cos = staticmethod(np.cos)
+    sin = staticmethod(np.sin)
+    all = staticmethod(np.all)
+
+    @staticmethod
+    def where(cond: Any, a: Any, b: Any) -> Any:
+        return np.where(cond, a, b)
 
     @staticmethod
     def unless(cond: Any, x: Any) -> Any:

@@ -28,6 +28,7 @@ from playground._engine.sweep import Sweep, nearest_where
 from playground.controller import grab, ledge, stairs
 from playground.controller._vec import ZERO, unit_or
 from playground.controller.config import ControllerConfig
+from playground.controller.elementwise import FLOATS, Ops
 from playground.controller.grab import Grip
 from playground.controller.ledge import LedgeHold
 from playground.controller.states import (
@@ -229,7 +230,9 @@ def height(sensed: Sensed, hit: GroundHit) -> float:
     return (body.x - hit.point[0]) * hit.normal[0] + (body.y - hit.point[1]) * hit.normal[1]
 
 
-def lean(perceived: Vec, level: Vec, effort: Vec, weight: float, max_lean: float) -> Vec:
+def lean(
+    perceived: Vec, level: Vec, effort: Vec, weight: float, max_lean: float, ops: Ops = FLOATS
+) -> Vec:
     """The perceived up (unit) held to the lean its own step explains: within ``max_lean``
     (rad) of the field's up ``level`` (unit), and on the side its legs' ``effort`` (N: the
     drive beyond holding the slope) pushes, no further than that effort leans its ``weight``
@@ -240,25 +243,36 @@ def lean(perceived: Vec, level: Vec, effort: Vec, weight: float, max_lean: float
     tilts it along the slope's normal. A lean its own legs make (leaning into its own step)
     is the controller's; one that a push from outside gives is not, and tipped by it the probe
     would take a wall for a floor. ``perceived`` itself comes back when it is within the
-    bounds.
+    bounds (in floats, the very tuple). Written over ``ops``
+    (:mod:`~playground.controller.elementwise`): in arrays a crowd's members lean row by row,
+    each as it would alone.
 
     >>> lean((0.6, 0.8), (0.0, 1.0), (0.0, 0.0), 686.7, 0.1)     # a push tips it 37°: held
     (0.09983341664682815, 0.9950041652780258)
     >>> lean((0.6, 0.8), (0.0, 1.0), (515.0, 0.0), 686.7, 0.1)   # its own step leans it so
     (0.6, 0.8)
+    >>> import numpy as np
+    >>> from playground.controller.elementwise import ARRAYS
+    >>> x, y = lean((np.array([0.6, 0.6]), np.array([0.8, 0.8])), (0.0, 1.0),
+    ...             (np.array([0.0, 515.0]), 0.0), 686.7, 0.1, ARRAYS)
+    >>> x.tolist(), y.tolist()                                     # the two, as rows
+    ([0.09983341664682815, 0.6], [0.9950041652780258, 0.8])
     """
     px, py = perceived
     ax, ay = level
-    angle = math.atan2(ax * py - ay * px, ax * px + ay * py)
-    if -max_lean <= angle <= max_lean:
+    angle = ops.atan2(ax * py - ay * px, ax * px + ay * py)
+    if ops.all((-max_lean <= angle) & (angle <= max_lean)):
         return perceived
     ex, ey = effort
-    own = math.atan2(ax * ey - ay * ex, weight + ax * ex + ay * ey)
-    held = max(min(0.0, own) - max_lean, min(max(0.0, own) + max_lean, angle))
-    if held == angle:
+    own = ops.atan2(ax * ey - ay * ex, weight + ax * ex + ay * ey)
+    held = ops.max(ops.min(0.0, own) - max_lean, ops.min(ops.max(0.0, own) + max_lean, angle))
+    # Within max_lean, held is angle too (the bounds reach past ±max_lean): the rows kept are
+    # those of either return.
+    kept = held == angle
+    if ops.all(kept):
         return perceived
-    c, s = math.cos(held), math.sin(held)
-    return (c * ax - s * ay, s * ax + c * ay)
+    c, s = ops.cos(held), ops.sin(held)
+    return (ops.where(kept, px, c * ax - s * ay), ops.where(kept, py, s * ax + c * ay))
 
 
 def effort(drive: Vec, sensed: Sensed) -> Vec:
@@ -269,15 +283,33 @@ def effort(drive: Vec, sensed: Sensed) -> Vec:
     return effort_on(drive, None if hit is None else hit.normal, sensed.gravity, sensed.body.mass)
 
 
-def effort_on(drive: Vec, normal: Vec | None, gravity: Vec, mass: float) -> Vec:
+def effort_on(
+    drive: Vec,
+    normal: Vec | None,
+    gravity: Vec,
+    mass: float,
+    ops: Ops = FLOATS,
+    holding: bool = True,
+) -> Vec:
     """:func:`effort` from its parts: the ground's ``normal`` (None: no ground), the
-    ``gravity`` (m/s²) and the body's ``mass`` (kg) of that step."""
+    ``gravity`` (m/s²) and the body's ``mass`` (kg) of that step. Written over ``ops``: in
+    arrays, ``holding`` marks the rows that found a ground and drove (a float's ``normal`` is
+    not None and ``drive`` not :data:`~playground.controller._vec.ZERO`); the others' effort is
+    their drive as it is.
+
+    >>> hold = (0.8 * 412.02, 0.6 * 412.02)    # N: 70 kg held up a 37° slope, m·g·sin 37°
+    >>> effort_on(hold, (-0.6, 0.8), (0.0, -9.81), 70.0)             # holding it: no effort
+    (0.0, 0.0)
+    >>> effort_on((hold[0] + 100.0, hold[1]), (-0.6, 0.8), (0.0, -9.81), 70.0)
+    (100.0, 0.0)
+    """
     if normal is None or drive is ZERO:
         return drive
     nx, ny = normal
     gx, gy = gravity
     pull = mass * (gx * ny - gy * nx)  # gravity along the tangent (ny, −nx), N
-    return (drive[0] + pull * ny, drive[1] - pull * nx)
+    dx, dy = drive
+    return (ops.where(holding, dx + pull * ny, dx), ops.where(holding, dy - pull * nx, dy))
 
 
 PUSH_ECHO = 0.3

@@ -7,6 +7,7 @@ member down the scalar path, so the fault catalogue still sees its break."""
 
 from __future__ import annotations
 
+import struct
 from typing import Any
 
 import numpy as np
@@ -16,10 +17,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from playground import faults
+from playground.controller import crowd as crowd_module
 from playground.controller import stairs
+from playground.controller._vec import ZERO
 from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
 from playground.controller.crowd import Crowd
+from playground.controller.sensing import effort, effort_on, lean
 from playground.gravity import GravityRule
 from playground.intents import Intent, Patrol, Script
 from playground.level import find, load
@@ -296,3 +300,62 @@ def test_the_crowds_tread_ahead_misses_no_step_up(monkeypatch: pytest.MonkeyPatc
     for _ in range(120):
         floor.step()
     assert seen["walking"] > 1000 and seen["flagged"] == 0
+
+
+def test_the_crowds_lean_is_each_members_own(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Law: the members whose perceived up is beyond ``max_lean`` of the field's lean on arrays
+    (``sensing.lean`` and ``sensing.effort_on`` over ARRAYS) as each would alone, to the bit:
+    the walkers that turn (leaning into their own step: an effort from the arrays of their last
+    batch step) and those that stop (no effort of their own: held to max_lean)."""
+    seen = {"own, held": 0, "own, kept": 0, "held": 0}
+    efforts = Crowd._efforts
+    arrays = crowd_module._lean
+
+    def same(got: tuple[float, float], want: tuple[float, float]) -> None:
+        assert struct.pack("<2d", *got) == struct.pack("<2d", *want)
+
+    def checked_efforts(self: Crowd, rows: Any, own: Any) -> Any:
+        ex, ey = efforts(self, rows, own)
+        for j, i in enumerate(rows.tolist()):
+            c, view = self.members[i], self._views[i]
+            if not own[j]:
+                want = ZERO
+            elif c.stale is not self:
+                want = effort(c.last_forces.drive, c.sensed)
+            else:  # the floats of its last batch step
+                drive = (view["drive_x"][i], view["drive_y"][i]) if view["drive_on"][i] else ZERO
+                _, _, nx, ny, *_ = view["hits"]
+                normal = None if view["ground"][i] is None else (nx[i], ny[i])
+                body, _, _, _, gx, gy, *_ = view["sensed"]
+                want = effort_on(drive, normal, (gx[i], gy[i]), body.mass[i])
+            same((ex[j], ey[j]), (float(want[0]), float(want[1])))
+        return ex, ey
+
+    def checked_lean(perceived: Any, level: Any, own: Any, weight: Any, most: Any, ops: Any) -> Any:
+        x, y = arrays(perceived, level, own, weight, most, ops)
+        for k in range(len(x)):
+            p = (float(perceived[0][k]), float(perceived[1][k]))
+            e = (float(own[0][k]), float(own[1][k]))
+            want = lean(p, (float(level[0][k]), float(level[1][k])), e, float(weight[k]),
+                        float(most[k]))  # fmt: skip
+            same((x[k], y[k]), want)
+            mine = e != (0.0, 0.0)
+            seen[("own, " if mine else "") + ("kept" if want is p else "held")] += 1
+        return x, y
+
+    monkeypatch.setattr(Crowd, "_efforts", checked_efforts)
+    monkeypatch.setattr(crowd_module, "_lean", checked_lean)
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (80.0, 0.0))
+    for i in range(30):
+        walk = Intent(move=1.0 if i % 2 else -0.6)
+        source: Any = (
+            Patrol(0.5 + 0.01 * i, 1.0 + 0.03 * i)
+            if i % 3
+            else Script(((0.0, walk), (0.4 + 0.02 * i, Intent())))
+        )
+        Controller(world, f"e{i}", position=(2.0 * i, 0.95), source=source)
+    assert Crowd.of(world).active
+    for _ in range(240):
+        world.step()
+    assert min(seen.values()) > 50, seen
