@@ -3,8 +3,9 @@ number of actors (:data:`CROWD_MIN_ACTORS`; below it each controller runs its ow
 
 Each step the crowd reads every member's body in one batch call (:class:`Poses`), their
 perceived gravity as arrays (:meth:`World.perceived_block`) and which bodies touch anything (one
-batch read of the arbiters); each probe is still one C callback (:class:`Sweep`: a query cannot
-be batched). The state machine's two common states and the force laws run on arrays, through
+batch read of the arbiters); their probes are cast in one call
+(:class:`~playground._engine.sweep.Sweeps`: still a Chipmunk query each, a query cannot be
+batched). The state machine's two common states and the force laws run on arrays, through
 the very functions one controller uses (:mod:`~playground.controller.laws` over
 :data:`~playground.controller.elementwise.ARRAYS`), and the forces enter the ledger as one block
 of rows (:class:`~playground.forces.ledger.ForceRows`).
@@ -42,7 +43,7 @@ from numpy.typing import NDArray
 from playground._engine import raw
 from playground._engine.batch import Poses, touching_ids
 from playground._engine.state import BodyState, body_motion, space_gravity
-from playground._engine.sweep import nearest_each, sharp
+from playground._engine.sweep import NO_HIT, Sweeps, sharp
 from playground.controller import laws as law
 from playground.controller import stairs
 from playground.controller._vec import ZERO, unit_or
@@ -164,6 +165,39 @@ class _Rows:
         if a is None:
             a = self._out[key] = np.zeros((self._n, *value.shape[1:]), dtype=value.dtype)
         a[rows] = value[rows]
+
+
+class _Grounds:
+    """What a crowd's probes found, by the shape hit (:attr:`Hits.shapes
+    <playground._engine.sweep.Hits.shapes>`; most hit one floor), a row each, and a last row
+    for :data:`~playground._engine.sweep.NO_HIT` (-1), where nothing was found."""
+
+    __slots__ = ("bodies", "kinds", "motion")
+
+    def __init__(self, shapes: list[pymunk.Shape]) -> None:
+        bodies: list[pymunk.Body | None] = [s.body for s in shapes]
+        kinds: list[tuple[bool, bool, bool]] = []
+        motion: list[tuple[float, float, float]] = []
+        for s, b in zip(shapes, bodies, strict=True):
+            if b is None:
+                kinds.append((False, False, False))
+                motion.append((0.0, 0.0, 0.0))
+                continue
+            kind, vx, vy, w = body_motion(b)
+            kinds.append((True, kind == STATIC and w == 0.0, sharp(s)))
+            motion.append((vx, vy, w))
+        bodies.append(None)
+        kinds.append((False, False, False))
+        motion.append((0.0, 0.0, 0.0))
+        self.bodies = np.empty(len(bodies), dtype=object)
+        """Its body (None: nothing found, or a shape without a body, which is no ground)."""
+        for k, b in enumerate(bodies):  # one by one: a list would be searched for sequences
+            self.bodies[k] = b
+        self.kinds = np.array(kinds, dtype=bool)
+        """Three columns: it has a body; that body is static and does not turn; the shape has
+        sharp corners (:func:`~playground._engine.sweep.sharp`)."""
+        self.motion = np.array(motion, dtype=np.float64)
+        """Three columns: its body's velocity (m/s) and angular velocity (rad/s)."""
 
 
 class Crowd:
@@ -419,71 +453,46 @@ class Crowd:
         touched = touching_ids(world.space, self._arbiters)
         if len(touched):
             ok &= ~np.isin(self._ids, touched)
-        # Each probe is one C query with its Python callback (a query is not batched), all of
-        # them in one call.
-        ground: list[pymunk.Body | None] = [None] * n
-        motions: dict[pymunk.Shape, tuple[pymunk.Body | None, int, float, float, float, bool]] = {}
+        # Each probe is one Chipmunk query (a query is not batched), all of them in one call.
         probing = np.flatnonzero(ok)
-        ends_x = x - ux * self._probe_length
-        ends_y = y - uy * self._probe_length
-        sweeps = self._sweeps
-        found_at = nearest_each(
-            sweeps if len(probing) == n else [sweeps[i] for i in probing.tolist()],
-            x[probing].tolist(),
-            y[probing].tolist(),
-            ends_x[probing].tolist(),
-            ends_y[probing].tolist(),
-            self._probe_radius[probing].tolist(),
+        found = self._sweeps.nearest(
+            probing,
+            x[probing],
+            y[probing],
+            (x - ux * self._probe_length)[probing],
+            (y - uy * self._probe_length)[probing],
+            self._probe_radius[probing],
         )
-        xs, ys, uxs, uys = x.tolist(), y.tolist(), ux.tolist(), uy.tolist()
-        held = grounded_before.tolist()
-        configs = self._configs
-        cos_slope = self._stairs.cos_slope.tolist()
-        at: list[int] = []
-        found_rows: list[tuple[float, float, float, float, float, float, float]] = []
-        for i, found in zip(probing.tolist(), found_at, strict=True):
-            if found is None:
-                # Grounded, its own step looks for a tread to step down to (stairs.below).
-                if held[i]:
-                    ok[i] = False
-                continue
-            shape, fhx, fhy, fnx, fny = found
-            seen = motions.get(shape)
-            if seen is None:
-                b = shape.body
-                seen = motions[shape] = (
-                    (b, *body_motion(b), sharp(shape))
-                    if b is not None
-                    else (None, 0, 0.0, 0.0, 0.0, False)
-                )
-            b, kind, bvx, bvy, w, corners = seen
-            if b is None:
-                continue
-            if kind != STATIC or w != 0.0:
-                ok[i] = False
-                continue
-            # On stairs its own step's probe reads another ground: a corner's face, a tread to
-            # step down to (grounded over unwalkable ground), a tread ahead to step up onto
-            # (for the walking ones, after this loop: _may_step_up). stairs.face and
-            # stairs.walkable's own tests first, the same float operations: most members
-            # stand on a face, square to up.
-            qx, qy = uxs[i], uys[i]
-            along = fnx * qx + fny * qy
-            if (
-                along < _COS_CORNER_TILT
-                and corners
-                and stairs.face(found, xs[i], ys[i], qx, qy, configs[i].probe_radius) is not found
-            ) or (held[i] and not along >= cos_slope[i]):
-                ok[i] = False
-                continue
-            ground[i] = b
-            at.append(i)
-            found_rows.append((fhx, fhy, fnx, fny, bvx, bvy, w))
+        grounds = _Grounds(found.shapes)
+        shape_of = found.shape
+        solid, still, corners = grounds.kinds[shape_of].T
+        # Grounded and finding nothing, its own step looks for a tread to step down to
+        # (stairs.below); over a ground that moves, its own step.
+        ok[probing[(shape_of == NO_HIT) & grounded_before[probing]]] = False
+        ok[probing[solid & ~still]] = False
+        # On stairs its own step's probe reads another ground: a corner's face, a tread to step
+        # down to (grounded over unwalkable ground), a tread ahead to step up onto (for the
+        # walking ones, below: _may_step_up). stairs.face and stairs.walkable's own tests first,
+        # the same float operations: most members stand on a face, square to up.
+        along = found.nx * ux[probing] + found.ny * uy[probing]
+        off = grounded_before[probing] & ~(along >= self._stairs.cos_slope[probing])
+        on = solid & still
+        for q in np.flatnonzero(on & ~off & (along < _COS_CORNER_TILT) & corners).tolist():
+            i = int(probing[q])
+            probed = (found.shapes[shape_of[q]], *found.point_normal[:, q].tolist())
+            pose = (float(x[i]), float(y[i]), float(ux[i]), float(uy[i]))
+            off[q] = stairs.face(probed, *pose, self._configs[i].probe_radius) is not probed
+        ok[probing[on & off]] = False
+        kept = np.flatnonzero(on & ~off)
+        at = probing[kept]
+        on_ground = np.empty(n, dtype=object)
+        on_ground[at] = grounds.bodies[shape_of[kept]]
+        ground: list[pymunk.Body | None] = on_ground.tolist()
         hit = np.zeros(n, dtype=bool)
+        hit[at] = True
         cols = np.zeros((7, n))
-        if at:
-            hit[at] = True
-            cols[:, at] = np.array(found_rows, dtype=np.float64).T
+        cols[:4, at] = found.point_normal[:, kept]
+        cols[4:, at] = grounds.motion[shape_of[kept]].T
         hx, hy, nx, ny, gvx, gvy, gw = cols
         walking = ok & hit & (move != 0.0)
         if walking.any():
@@ -597,7 +606,7 @@ class Crowd:
         if len(old) == len(configs) and all(map(operator.is_, old, configs)):
             return
         self._configs = configs
-        self._sweeps = [c.senses.sweep for c in self.members]
+        self._sweeps = Sweeps([c.senses.sweep for c in self.members])
         self._probe_length = np.array([cfg.probe_length for cfg in configs])
         self._probe_radius = np.array([cfg.probe_radius for cfg in configs])
         self._stairs = _StairsArrays(configs)
@@ -640,30 +649,20 @@ class Crowd:
         may = np.zeros(len(walking), dtype=bool)
         if not len(rows):
             return may
-        sweeps = self._sweeps
-        zeros = [0.0] * len(rows)
-        treads = nearest_each(
-            [sweeps[i] for i in rows.tolist()],
-            ax[rows].tolist(),
-            ay[rows].tolist(),
-            bx[rows].tolist(),
-            by[rows].tolist(),
-            zeros,
-        )
-        at = [i for i, t in zip(rows.tolist(), treads, strict=True) if t is not None]
-        if not at:
+        treads = self._sweeps.nearest(rows, ax[rows], ay[rows], bx[rows], by[rows], 0.0)
+        tread_of = treads.shape
+        seen = tread_of != NO_HIT
+        if not seen.any():
             return may
-        found = [t for t in treads if t is not None]
-        shapes = {t[0] for t in found}
-        no_body = {s: s.body is None for s in shapes}
-        r = np.array(at, dtype=np.intp)
-        sx, sy, mx, my = np.array([t[1:] for t in found], dtype=np.float64).T
+        r = rows[seen]
+        sx, sy, mx, my = treads.point_normal[:, seen]
+        no_body = np.array([s.body is None for s in treads.shapes], dtype=bool)
         hx, hy, nx, ny = hx[r], hy[r], nx[r], ny[r]
         no_step = (
             ((sx == bx[r]) & (sy == by[r]))
             | ((sx - hx) * nx + (sy - hy) * ny <= k.clearance[r])
             | (mx * nx + my * ny < _COS_TREAD_PARALLEL)
-            | np.array([no_body[t[0]] for t in found], dtype=bool)
+            | no_body[tread_of[seen]]
         )
         may[r] = ~no_step
         return may
