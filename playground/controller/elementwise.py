@@ -4,10 +4,10 @@ a law written over ``ops`` serves one controller in floats and a crowd in arrays
 
 ``ARRAYS.max(a, b)`` is Python's ``max(a, b)`` elementwise — ``a`` unless ``b > a`` — not
 ``np.maximum``, which gives −0.0 for ``max(0.0, −0.0)``; ``ARRAYS.atan2`` is ``math.atan2``
-element by element, not ``np.arctan2``, whose SIMD loop on a CPU with AVX-512 differs from libm
-in the last bit, and ``ARRAYS.hypot`` is ``math.hypot``'s, not ``np.hypot``'s (which rounds
-otherwise); ``np.cos`` and ``np.sin`` are libm's (``tests/controller/test_elementwise.py``
-checks each).
+element by element (:func:`playground._engine.libm.atan2`), not ``np.arctan2``, whose SIMD loop
+on a CPU with AVX-512 differs from libm in the last bit, and ``ARRAYS.hypot`` is
+``math.hypot``'s, not ``np.hypot``'s (which rounds otherwise); ``np.cos`` and ``np.sin`` are
+libm's (``tests/controller/test_elementwise.py`` checks each).
 
 A branch of a law becomes :meth:`Ops.where` (a select, row by row), and its early return a
 shortcut taken where :meth:`Ops.all` rows agree: one row for floats.
@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from playground._engine import libm
 from playground.controller._vec import ZERO
 
 __all__ = ["ARRAYS", "FLOATS", "Ops"]
@@ -81,12 +82,10 @@ def _min(a: Any, b: Any) -> Any:
 
 
 def _atan2(y: Any, x: Any) -> Any:
-    # libm's atan2 on each pair: numpy 2.4's float64 arctan2 on AVX-512 (its SIMD loop) gives
-    # another last bit for about one pair in thirteen of [-1, 1]², and a crowd's balance torque
-    # would then differ from the same controller's alone.
-    yb, xb = np.broadcast_arrays(y, x)
-    flat = map(math.atan2, yb.ravel().tolist(), xb.ravel().tolist())
-    return np.array(list(flat), dtype=np.float64).reshape(yb.shape)
+    # libm's atan2 on each pair (playground._engine.libm): numpy 2.4's float64 arctan2 on
+    # AVX-512 (its SIMD loop) gives another last bit for about one pair in thirteen of [-1, 1]²,
+    # and a crowd's balance torque would then differ from the same controller's alone.
+    return libm.atan2(y, x)
 
 
 def _hypot(x: Any, y: Any) -> Any:
