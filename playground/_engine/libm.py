@@ -61,8 +61,8 @@ def atan2(y: Any, x: Any) -> NDArray[np.float64]:
         out = np.empty(y.shape, dtype=np.float64)
         try:
             _atan2_c(y, x, out)
-        except (TypeError, BufferError):
-            pass
+        except (TypeError, ValueError, BufferError):
+            pass  # another dtype, or not C-contiguous (numpy says ValueError, others BufferError)
         else:
             return out
     yb, xb = np.broadcast_arrays(np.asarray(y, dtype=np.float64), np.asarray(x, dtype=np.float64))

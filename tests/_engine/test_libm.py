@@ -56,9 +56,14 @@ def test_atan2_broadcasts_and_takes_views_and_floats() -> None:
     want = [[math.atan2(a, b) for a, b in zip(r, x.tolist(), strict=True)] for r in y.tolist()]
     assert got.tolist() == want
     assert float(libm.atan2(1.0, -1.0)) == math.atan2(1.0, -1.0)
-    # One shape, but strided, or integers: read as values too.
-    a, b = np.arange(8.0)[::2] - 1.5, np.arange(4)
-    assert libm.atan2(a, b).tolist() == [math.atan2(p, q) for p, q in zip(a, b, strict=True)]
+    # One shape, but strided (a column of rows), or integers: read as values too.
+    rows = np.arange(8.0).reshape(4, 2) - 3.5
+    a, b = rows[:, 0], rows[:, 1]
+    assert not a.flags.c_contiguous
+    want = [math.atan2(p, q) for p, q in zip(a.tolist(), b.tolist(), strict=True)]
+    assert libm.atan2(a, b).tolist() == want
+    ints = [math.atan2(p, q) for p, q in zip(a.tolist(), range(4), strict=True)]
+    assert libm.atan2(a, np.arange(4)).tolist() == ints
 
 
 @pytest.mark.skipif(libm.ATAN2_BY != "compiled", reason="the compiled helper is not built")
