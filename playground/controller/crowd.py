@@ -384,9 +384,14 @@ class Crowd:
         # Each member's intent as a plain move (NaN: it asks for more), computed again only when
         # an intent changed (a patrol keeps its intent between turns; a keyboard makes new ones).
         intents = [c.intent for c in members]
-        if len(intents) != len(self._intents) or not all(map(operator.is_, intents, self._intents)):
-            self._intents = intents
+        last = self._intents
+        if len(intents) != len(last):
             self._moves = np.array([_plain_move(i) for i in intents], dtype=np.float64)
+        else:
+            moves = self._moves
+            for i in [i for i, a, b in zip(range(n), intents, last, strict=True) if a is not b]:
+                moves[i] = _plain_move(intents[i])
+        self._intents = intents
         # NaN also marks a member under other laws, or removed: it runs scalar (a move is within
         # [-1, 1]).
         lawful = [c.laws is default_laws and not c.removed for c in members]
@@ -822,8 +827,9 @@ class Crowd:
             ay = np.where(steer_on, svy, 0.0)
             put("fx", r, sx + ax)
             put("fy", r, sy + ay)
-            z = np.zeros(n)
-            put("parts", r, np.stack([z, z, 0.0 + ax, 0.0 + ay, sx, sy], axis=1))
+            parts = np.zeros((n, 6))  # [px, py, ax, ay, sx, sy]: no contact part
+            parts[:, 2], parts[:, 3], parts[:, 4], parts[:, 5] = 0.0 + ax, 0.0 + ay, sx, sy
+            put("parts", r, parts)
             if cfg.lock_rotation:
                 put("torque", r, np.zeros(n))
                 put("balance", r, np.zeros(n))
