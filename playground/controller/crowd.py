@@ -266,6 +266,9 @@ class Crowd:
             return
         world = self.world
         if want:
+            # Its arrays are of when it last ran: each member's state of now (they ran alone).
+            self._fresh()
+            self._absorb_all()
             for c in self.members:
                 world.off(Stage.CONTROL, c.step)
             world.on(Stage.CONTROL, self.step)

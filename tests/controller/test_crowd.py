@@ -24,6 +24,7 @@ from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
 from playground.controller.crowd import Crowd
 from playground.controller.sensing import effort, effort_on, lean
+from playground.controller.states import State
 from playground.gravity import GravityRule
 from playground.intents import Intent, Patrol, Script
 from playground.level import find, load
@@ -359,3 +360,86 @@ def test_the_crowds_lean_is_each_members_own(monkeypatch: pytest.MonkeyPatch) ->
     for _ in range(240):
         world.step()
     assert min(seen.values()) > 50, seen
+
+
+def _switching_crowd(most: int) -> tuple[World, list[Controller]]:
+    """Thirty on a floor with a crate at x = 0: walkers, patrols, and scripts that walk, jump
+    (between 1.1 and 1.7 s) and push the crate (from 0.9 s), run from the start with ``most``
+    as the crowd's fewest members."""
+    world = World()
+    world.add_static_segment((-40.0, 0.0), (80.0, 0.0))
+    world.add_box("crate", mass=40.0, size=(1.0, 1.0), position=(0.0, 0.5))
+    Crowd.of(world).set_min_actors(most)
+    actors = []
+    for i in range(30):
+        at = 1.1 + 0.02 * i
+        source: Any = (
+            Patrol(0.5 + 0.01 * i, 1.0 + 0.05 * i)
+            if i % 3 == 0
+            else Script(
+                (
+                    (0.0, Intent(move=0.8 if i % 2 else -0.5)),
+                    (0.9, Intent(move=1.0, push=True)),
+                    (at, Intent(move=0.3, jump=True)),
+                    (at + 0.05, Intent(move=0.3)),
+                )
+            )
+        )
+        x = -2.2 if i == 1 else 2.0 * i
+        actors.append(Controller(world, f"e{i}", position=(x, 0.95), source=source))
+    return world, actors
+
+
+OFF_AT, ON_AT = 100, 200
+"""Steps at which the crowd of :func:`_switching_crowd` stops (``NEVER``) and runs again
+(``ALWAYS``): at the default dt (1/120 s), from 0.83 s to 1.67 s its members run their own
+steps (pushing the crate, jumping: half of them in the air when it runs again)."""
+
+BATCHED_AGAIN = 0.5
+"""Fewest of the member-steps after :data:`ON_AT` that the crowd runs in batch (the oracles
+below compare something; measured 0.75: those in the air or against the crate run their own)."""
+
+
+def test_a_crowd_stopped_and_started_again_runs_as_it_does_one_by_one() -> None:
+    """Law: a crowd that stops (``set_min_actors(NEVER)``) while its members push and jump
+    alone, then runs again (``set_min_actors(ALWAYS)``), starts from each member's state of
+    now, not from its arrays of when it stopped: bodies and readings equal the scalar path's
+    at every step, and the batch path runs again."""
+    scalar, sa = _switching_crowd(NEVER)
+    batch, sb = _switching_crowd(ALWAYS)
+    crowd = Crowd.of(batch)
+    airborne = batched = 0
+    for step in range(ON_AT + 120):
+        if step == OFF_AT:
+            crowd.set_min_actors(NEVER)
+        if step == ON_AT:
+            crowd.set_min_actors(ALWAYS)
+            # Not vacuous: some of the members the arrays last saw grounded are in the air.
+            airborne = sum(c.state is not State.GROUNDED for c in sb)
+        scalar.step()
+        batch.step()
+        if step >= ON_AT:  # (before the readings are read: reading builds them)
+            batched += sum(c.stale is not None for c in sb)
+        assert _readings(batch, sb) == _readings(scalar, sa), f"step {step}"
+    assert airborne > 0
+    assert batched >= BATCHED_AGAIN * 120 * len(sb)
+
+
+def test_a_member_joining_a_crowd_run_one_by_one_starts_it_as_it_is() -> None:
+    """Law: members that ran their own steps below ``min_actors`` (pushing, jumping), then
+    one joins and the crowd runs: bodies and readings equal the scalar path's at every step."""
+    scalar, sa = _switching_crowd(NEVER)
+    batch, sb = _switching_crowd(31)
+    assert not Crowd.of(batch).active
+    batched = 0
+    for step in range(ON_AT + 120):
+        if step == ON_AT:
+            for world, actors in ((scalar, sa), (batch, sb)):
+                actors.append(Controller(world, "late", position=(70.0, 0.95)))
+            assert Crowd.of(batch).active
+        scalar.step()
+        batch.step()
+        if step >= ON_AT:
+            batched += sum(c.stale is not None for c in sb)
+        assert _readings(batch, sb) == _readings(scalar, sa), f"step {step}"
+    assert batched >= BATCHED_AGAIN * 120 * len(sb)
