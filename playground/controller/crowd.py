@@ -125,13 +125,15 @@ class _Group:
         self.cos_slope = math.cos(config.max_slope)
 
 
-class _StairsArrays:
-    """Each member's lengths of :mod:`~playground.controller.stairs` (m), its hover frequency
-    (Hz) and the cosine of its steepest walkable slope, as arrays, for the tread ahead of many
-    members at once."""
+class _ConfigArrays:
+    """What the crowd's arrays read of each member's config: its lengths of
+    :mod:`~playground.controller.stairs` (m), its hover frequency (Hz), the cosine of its
+    steepest walkable slope, its max_lean (rad) and the sine of it; made when the configs
+    change, for the tread ahead and the lean of many members at once."""
 
     __slots__ = (
-        "clearance", "cos_slope", "hover_frequency", "radius", "reach", "rho", "ride_height",
+        "clearance", "cos_slope", "hover_frequency", "max_lean", "radius", "reach", "rho",
+        "ride_height", "sin_lean",
     )  # fmt: skip
 
     def __init__(self, configs: list[ControllerConfig]) -> None:
@@ -142,6 +144,8 @@ class _StairsArrays:
         self.clearance = np.array([c.ride_height - 0.5 * c.height for c in configs])
         self.hover_frequency = np.array([c.hover_frequency for c in configs])
         self.cos_slope = np.array([math.cos(c.max_slope) for c in configs])
+        self.max_lean = np.array([c.max_lean for c in configs])
+        self.sin_lean = np.array([math.sin(c.max_lean) for c in configs])
 
 
 class _Rows:
@@ -412,6 +416,8 @@ class Crowd:
         # -- sensing ---------------------------------------------------------------------------
         poses = self._poses.read(world.space, self._ids)
         x, y, angle, vx, vy, spin = poses.T
+        handles = self._handles
+        mass = np.fromiter(map(raw.mass, handles), np.float64, n)
         cos, sin = np.cos(angle), np.sin(angle)
         gx, gy, gux, guy, has_g = self._gravity(world)
         ux, uy = cur["ux"].copy(), cur["uy"].copy()
@@ -442,15 +448,11 @@ class Crowd:
                 # Standing, or pushed within PUSH_ECHO, no lean of its own (sensing.leaning);
                 # a member touching anything now runs its own step (below).
                 own = (move[rows] != 0.0) & ~(t - cur["touched_at"][rows] <= PUSH_ECHO)
-                handles = self._handles
-                mass = np.fromiter(
-                    (raw.mass(handles[i]) for i in rows.tolist()), np.float64, len(rows)
-                )
                 ux[rows], uy[rows] = _lean(
                     (pux[rows], puy[rows]),
                     (gux[rows], guy[rows]),
                     self._efforts(rows, own),
-                    mass * self._weight_per_kg()[rows],
+                    mass[rows] * self._weight_per_kg()[rows],
                     self._max_lean()[rows],
                     ARRAYS,
                 )
@@ -483,7 +485,7 @@ class Crowd:
         # walking ones, below: _may_step_up). stairs.face and stairs.walkable's own tests first,
         # the same float operations: most members stand on a face, square to up.
         along = found.nx * ux[probing] + found.ny * uy[probing]
-        off = grounded_before[probing] & ~(along >= self._stairs.cos_slope[probing])
+        off = grounded_before[probing] & ~(along >= self._per_config.cos_slope[probing])
         on = solid & still
         for q in np.flatnonzero(on & ~off & (along < _COS_CORNER_TILT) & corners).tolist():
             i = int(probing[q])
@@ -511,8 +513,6 @@ class Crowd:
             if c.stale is self:
                 self.materialize(c)
         # -- deciding and acting, on arrays, per config -------------------------------------------
-        handles = self._handles
-        mass = np.fromiter(map(raw.mass, handles), np.float64, n)
         moment = np.fromiter(map(raw.moment, handles), np.float64, n)
         body = _BodyState(x, y, vx, vy, cos, sin, spin, mass, moment)
         zeros = np.zeros(n)
@@ -592,9 +592,14 @@ class Crowd:
         cur["push_y"][done] = 0.0
         self._code[done] = nxt["code"][done]
         views, last_ground = self._views, self._last_ground
-        for i in done.tolist():
-            members[i].stale = self
-            views[i] = nxt
+        if len(done) == n:  # every member (the usual step)
+            for c in members:
+                c.stale = self
+            views[:] = [nxt] * n
+        else:
+            for i in done.tolist():
+                members[i].stale = self
+                views[i] = nxt
         for i in np.flatnonzero(ok & nxt["on_ground"]).tolist():
             last_ground[i] = nxt  # this step's hit, built when read
 
@@ -617,7 +622,7 @@ class Crowd:
         self._sweeps = Sweeps([c.senses.sweep for c in self.members])
         self._probe_length = np.array([cfg.probe_length for cfg in configs])
         self._probe_radius = np.array([cfg.probe_radius for cfg in configs])
-        self._stairs = _StairsArrays(configs)
+        self._per_config = _ConfigArrays(configs)
         by: dict[ControllerConfig, list[int]] = {}
         for i, cfg in enumerate(configs):
             by.setdefault(cfg, []).append(i)
@@ -642,7 +647,7 @@ class Crowd:
         :func:`~playground.controller.stairs.ahead`, the same float operations on arrays, and
         the rays are cast in one call; a tread on a one-way platform counts as found (the
         platform may let the ray pass)."""
-        k = self._stairs
+        k = self._per_config
         hx, hy, nx, ny = ground[0], ground[1], ground[2], ground[3]
         walk = walking & (nx * ux + ny * uy >= k.cos_slope)
         direction = np.where(move > 0.0, 1.0, -1.0)
@@ -728,18 +733,12 @@ class Crowd:
         return self._g_norm[1]
 
     def _max_lean(self) -> NDArray[np.float64]:
-        """Each member's max_lean, rad, by its config group."""
-        out = np.zeros(len(self.members))
-        for g in self._groups:
-            out[g.rows] = g.config.max_lean
-        return out
+        """Each member's max_lean, rad, by its config group (made when the configs change)."""
+        return self._per_config.max_lean
 
     def _sin_lean(self) -> NDArray[np.float64]:
-        """Each member's sin(max_lean), by its config group."""
-        out = np.zeros(len(self.members))
-        for g in self._groups:
-            out[g.rows] = math.sin(g.config.max_lean)
-        return out
+        """Each member's sin(max_lean), by its config group (made when the configs change)."""
+        return self._per_config.sin_lean
 
     def _gravity(self, world: World) -> tuple[Any, Any, Any, Any, Any]:
         """Each member's gravity (its rule on the uniform field), the unit up against it, and
