@@ -28,8 +28,11 @@ CROWD_SIZES = (1, 10, 50, 100, 200)
 """Actors in the crowds measured by default (issue 27's table)."""
 SPACING = 2.0
 """m between enemies at the start."""
-SETTLE = 60
-"""Steps run before timing: the hover springs settle on the floor."""
+SETTLE = 240
+"""Steps run before timing (2 s): the hover springs settle on the floor and every patrol has
+turned once (periods 2 + 0.01·i s, the 200th's first turn at 1.995 s), so the timed steps are
+a crowd's steady state: some members turning and leaning into their step, not only walking
+away from where they stood."""
 
 
 def crowd_world(n: int) -> World:
