@@ -323,6 +323,11 @@ class Crowd:
         # Each member's last ground: a GroundHit, or the view of the batch step it stood on.
         self._last_ground: list[Any] = [None] * n
         self._views: list[Any] = [None] * n
+        # Which members' readings are unread arrays of a batch step (``stale`` is the crowd), and
+        # which batch step's (a count of steps; -1: none): their efforts come from the arrays.
+        self._unread = np.zeros(n, dtype=bool)
+        self._view_id = np.full(n, -1, dtype=np.int64)
+        self._steps_run = getattr(self, "_steps_run", 0)
         self._rows_version = -1
         self._rows_key = b""
         self._rows_of = RowBodies([], self._ids[:0])
@@ -362,6 +367,8 @@ class Crowd:
         cur["touched_at"][i] = state.touched_at
         self._last_ground[i] = state.last_ground
         self._views[i] = None
+        self._unread[i] = False
+        self._view_id[i] = -1
 
     # -- the step --------------------------------------------------------------------------------
 
@@ -535,6 +542,7 @@ class Crowd:
         nxt["code_before"] = self._code.copy()
         nxt["short_before"] = cur["short"].copy()
         nxt["ground"] = ground
+        nxt["hit"] = hit
         nxt["hits"] = (hx, hy, nx, ny, gvx, gvy, gw, hits.distance, nxt["walkable"])
         nxt["sensed"] = (body, t, dt, wc.substeps, gx, gy, pux, puy, grounded_before)
         # -- the forces: a row per batch member, each taking effect at its member's turn -------
@@ -593,6 +601,9 @@ class Crowd:
         cur["push_y"][done] = 0.0
         self._code[done] = nxt["code"][done]
         views, last_ground = self._views, self._last_ground
+        self._steps_run += 1
+        self._unread[done] = True
+        self._view_id[done] = self._steps_run
         if len(done) == n:  # every member (the usual step)
             for c in members:
                 c.stale = self
@@ -696,20 +707,17 @@ class Crowd:
         step's (then it is no longer ``stale``)."""
         k = len(rows)
         ex, ey = np.zeros(k), np.zeros(k)
-        picked = rows.tolist()
-        members = [self.members[i] for i in picked]
-        views = [self._views[i] for i in picked]
-        fresh = own & np.array(
-            [c.stale is self and v is not None for c, v in zip(members, views, strict=True)],
-            dtype=bool,
-        )
+        fresh = own & self._unread[rows]
+        members = self.members
         for j in np.flatnonzero(own & ~fresh).tolist():
-            c = members[j]
+            c = members[int(rows[j])]
             ex[j], ey[j] = effort(c.last_forces.drive, c.sensed)
         # The rows of one batch step at a time (all of them the last step's, but for a few).
+        view_ids = self._view_id[rows]
         while fresh.any():
-            view = views[int(np.argmax(fresh))]
-            at = np.flatnonzero(fresh & np.array([v is view for v in views], dtype=bool))
+            first = int(np.argmax(fresh))
+            view = self._views[int(rows[first])]
+            at = np.flatnonzero(fresh & (view_ids == view_ids[first]))
             fresh[at] = False
             r = rows[at]
             drive_on = view["drive_on"][r]
@@ -718,11 +726,14 @@ class Crowd:
                 np.where(drive_on, view["drive_y"][r], 0.0),
             )
             _, _, nx, ny, *_ = view["hits"]
-            ground = view["ground"]
-            found = np.array([ground[i] is not None for i in r.tolist()], dtype=bool)
             body, _, _, _, gx, gy, *_ = view["sensed"]
             ex[at], ey[at] = _effort_on(
-                drive, (nx[r], ny[r]), (gx[r], gy[r]), body.mass[r], ARRAYS, found & drive_on
+                drive,
+                (nx[r], ny[r]),
+                (gx[r], gy[r]),
+                body.mass[r],
+                ARRAYS,
+                view["hit"][r] & drive_on,
             )
         return ex, ey
 
@@ -874,6 +885,7 @@ class Crowd:
         i = self._member_of[c.body]
         nxt = self._views[i]
         c.stale = None
+        self._unread[i] = False
         if nxt is None:
             return
         body, t, dt, substeps, gx, gy, pux, puy, grounded_before = nxt["sensed"]
