@@ -129,12 +129,13 @@ class _Group:
 class _ConfigArrays:
     """What the crowd's arrays read of each member's config: its lengths of
     :mod:`~playground.controller.stairs` (m), its hover frequency (Hz), the cosine of its
-    steepest walkable slope, its max_lean (rad) and the sine of it; made when the configs
-    change, for the tread ahead and the lean of many members at once."""
+    steepest walkable slope, its max_lean (rad) and a sine short of its sine (a perceived up
+    whose cross product with the field's up is smaller is surely within max_lean of it); made
+    when the configs change, for the tread ahead and the lean of many members at once."""
 
     __slots__ = (
         "clearance", "cos_slope", "hover_frequency", "max_lean", "radius", "reach", "rho",
-        "ride_height", "sin_lean",
+        "ride_height", "surely_inside",
     )  # fmt: skip
 
     def __init__(self, configs: list[ControllerConfig]) -> None:
@@ -146,7 +147,7 @@ class _ConfigArrays:
         self.hover_frequency = np.array([c.hover_frequency for c in configs])
         self.cos_slope = np.array([math.cos(c.max_slope) for c in configs])
         self.max_lean = np.array([c.max_lean for c in configs])
-        self.sin_lean = np.array([math.sin(c.max_lean) for c in configs])
+        self.surely_inside = np.array([math.sin(c.max_lean) * (1.0 - 1e-9) for c in configs])
 
 
 class _Rows:
@@ -428,30 +429,28 @@ class Crowd:
         mass = np.fromiter(map(raw.mass, handles), np.float64, n)
         cos, sin = np.cos(angle), np.sin(angle)
         gx, gy, gux, guy, has_g = self._gravity(world)
-        ux, uy = cur["ux"].copy(), cur["uy"].copy()
         grounded_before = self._code == 1
         # Airborne: up against the field (the last up where there is none).
-        ux = np.where(has_g, gux, ux)
-        uy = np.where(has_g, guy, uy)
+        ux = np.where(has_g, gux, cur["ux"])
+        uy = np.where(has_g, guy, cur["uy"])
         pux = puy = None
         if grounded_before.any():
             pu, pg = world.perceived_block(self._tracked_rows(world))
             pux, puy = pu[:, 0], pu[:, 1]
-            finite = np.isfinite(pux) & np.isfinite(puy)
+            # Grounded: the perceived up where there is one, the last up where it is too weak.
+            perceived = grounded_before & np.isfinite(pux) & np.isfinite(puy)
             weak = self._below(pg, wc.perception.up_threshold)
-            held_x = np.where(weak, cur["ux"], pux)
-            held_y = np.where(weak, cur["uy"], puy)
-            ux = np.where(grounded_before, np.where(finite, held_x, ux), ux)
-            uy = np.where(grounded_before, np.where(finite, held_y, uy), uy)
+            ux = np.where(perceived, np.where(weak, cur["ux"], pux), ux)
+            uy = np.where(perceived, np.where(weak, cur["uy"], puy), uy)
             # The perceived up is held to its lean (sensing.lean) and slopes are measured
             # against the field's up: where the perceived up is surely within max_lean of the
             # field's, lean returns it as it is.
-            leaned = grounded_before & finite & ~weak & has_g
+            leaned = perceived & ~weak & has_g
             dot = gux * pux + guy * puy
             cross = gux * puy - guy * pux
-            inside = (dot > 0.0) & (np.abs(cross) < self._sin_lean() * (1.0 - 1e-9))
+            inside = (dot > 0.0) & (np.abs(cross) < self._per_config.surely_inside)
             # Beyond it (leaning into its step), the very function on arrays.
-            rows = np.flatnonzero(leaned & ~inside & ok)
+            rows = (leaned & ~inside & ok).nonzero()[0]
             if len(rows):
                 # Standing, or pushed within PUSH_ECHO, no lean of its own (sensing.leaning);
                 # a member touching anything now runs its own step (below).
@@ -472,37 +471,43 @@ class Crowd:
         if len(touched):
             ok &= ~np.isin(self._ids, touched)
         # Each probe is one Chipmunk query (a query is not batched), all of them in one call.
-        probing = np.flatnonzero(ok)
+        probing = ok.nonzero()[0]
+        # The probing members' rows of the arrays: where every member probes (the usual step),
+        # every row, a view instead of a gather.
+        of = slice(None) if len(probing) == n else probing
         found = self._sweeps.nearest(
             probing,
-            x[probing],
-            y[probing],
-            (x - ux * self._probe_length)[probing],
-            (y - uy * self._probe_length)[probing],
-            self._probe_radius[probing],
+            x[of],
+            y[of],
+            (x - ux * self._probe_length)[of],
+            (y - uy * self._probe_length)[of],
+            self._probe_radius[of],
         )
         grounds = _Grounds(found.shapes)
         shape_of = found.shape
         solid, still, corners = grounds.kinds[shape_of].T
         # Grounded and finding nothing, its own step looks for a tread to step down to
         # (stairs.below); over a ground that moves, its own step.
-        ok[probing[(shape_of == NO_HIT) & grounded_before[probing]]] = False
-        ok[probing[solid & ~still]] = False
+        lost = ((shape_of == NO_HIT) & grounded_before[of]) | (solid & ~still)
         # On stairs its own step's probe reads another ground: a corner's face, a tread to step
         # down to (grounded over unwalkable ground), a tread ahead to step up onto (for the
         # walking ones, below: _may_step_up). stairs.face and stairs.walkable's own tests first,
         # the same float operations: most members stand on a face, square to up.
-        along = found.nx * ux[probing] + found.ny * uy[probing]
-        off = grounded_before[probing] & ~(along >= self._per_config.cos_slope[probing])
+        along = found.nx * ux[of] + found.ny * uy[of]
+        off = grounded_before[of] & ~(along >= self._per_config.cos_slope[of])
         on = solid & still
-        for q in np.flatnonzero(on & ~off & (along < _COS_CORNER_TILT) & corners).tolist():
+        for q in (on & ~off & (along < _COS_CORNER_TILT) & corners).nonzero()[0].tolist():
             i = int(probing[q])
             probed = (found.shapes[shape_of[q]], *found.point_normal[:, q].tolist())
             pose = (float(x[i]), float(y[i]), float(ux[i]), float(uy[i]))
             off[q] = stairs.face(probed, *pose, self._configs[i].probe_radius) is not probed
-        ok[probing[on & off]] = False
-        kept = np.flatnonzero(on & ~off)
+        ok[probing[lost | (on & off)]] = False
+        # The members on a ground kept, as rows of the probes' answers (kept) and of the arrays
+        # (at): every row where every member is (the usual step), copied without a gather.
+        kept = (on & ~off).nonzero()[0]
         at = probing[kept]
+        if len(at) == n:
+            kept = at = slice(None)
         on_ground = np.empty(n, dtype=object)
         on_ground[at] = grounds.bodies[shape_of[kept]]
         ground: list[pymunk.Body | None] = on_ground.tolist()
@@ -748,10 +753,6 @@ class Crowd:
         """Each member's max_lean, rad, by its config group (made when the configs change)."""
         return self._per_config.max_lean
 
-    def _sin_lean(self) -> NDArray[np.float64]:
-        """Each member's sin(max_lean), by its config group (made when the configs change)."""
-        return self._per_config.sin_lean
-
     def _gravity(self, world: World) -> tuple[Any, Any, Any, Any, Any]:
         """Each member's gravity (its rule on the uniform field), the unit up against it, and
         whether it has any: read again only when the field or a rule changed."""
@@ -777,8 +778,7 @@ class Crowd:
         s = pg[:, 0] * pg[:, 0] + pg[:, 1] * pg[:, 1]
         lo, hi = (threshold * (1.0 - 1e-12)) ** 2, (threshold * (1.0 + 1e-12)) ** 2
         below = s < lo
-        near = ~below & ~(s > hi) & np.isfinite(s)
-        for i in np.flatnonzero(near).tolist():
+        for i in ((s >= lo) & (s <= hi)).nonzero()[0].tolist():  # near it (NaN is not)
             below[i] = math.hypot(pg[i, 0], pg[i, 1]) < threshold
         return below
 
