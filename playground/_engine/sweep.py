@@ -313,7 +313,8 @@ class Sweeps:
         m = len(rows)
         x0, y0, x1, y1 = (np.ascontiguousarray(v, dtype=np.float64) for v in (x0, y0, x1, y1))
         if isinstance(radius, float | int):
-            radius = np.full(m, float(radius))
+            one, radius = float(radius), np.empty(m)
+            radius.fill(one)  # np.full's own steps, without its Python wrapper
         radius = np.ascontiguousarray(radius, dtype=np.float64)
         which = np.empty(m, dtype=np.intp)
         points = np.empty((4, m))

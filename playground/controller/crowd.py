@@ -128,20 +128,21 @@ class _Group:
 
 class _ConfigArrays:
     """What the crowd's arrays read of each member's config: its lengths of
-    :mod:`~playground.controller.stairs` (m), its hover frequency (Hz), the cosine of its
-    steepest walkable slope, its max_lean (rad) and a sine short of its sine (a perceived up
-    whose cross product with the field's up is smaller is surely within max_lean of it); made
-    when the configs change, for the tread ahead and the lean of many members at once."""
+    :mod:`~playground.controller.stairs` (m; ``front`` is radius + probe_radius, the sum
+    :func:`~playground.controller.stairs.ahead` looks ahead from), its hover frequency (Hz),
+    the cosine of its steepest walkable slope, its max_lean (rad) and a sine short of its sine
+    (a perceived up whose cross product with the field's up is smaller is surely within
+    max_lean of it); made when the configs change, for the tread ahead and the lean of many
+    members at once."""
 
     __slots__ = (
-        "clearance", "cos_slope", "hover_frequency", "max_lean", "radius", "reach", "rho",
-        "ride_height", "surely_inside",
+        "clearance", "cos_slope", "front", "hover_frequency", "max_lean", "reach", "ride_height",
+        "surely_inside",
     )  # fmt: skip
 
     def __init__(self, configs: list[ControllerConfig]) -> None:
-        self.radius = np.array([c.radius for c in configs])
         self.ride_height = np.array([c.ride_height for c in configs])
-        self.rho = np.array([c.probe_radius for c in configs])
+        self.front = np.array([c.radius + c.probe_radius for c in configs])
         self.reach = np.array([c.ride_height - c.half_length for c in configs])
         self.clearance = np.array([c.ride_height - 0.5 * c.height for c in configs])
         self.hover_frequency = np.array([c.hover_frequency for c in configs])
@@ -667,19 +668,20 @@ class Crowd:
         k = self._per_config
         hx, hy, nx, ny = ground[0], ground[1], ground[2], ground[3]
         walk = walking & (nx * ux + ny * uy >= k.cos_slope)
-        direction = np.where(move > 0.0, 1.0, -1.0)
+        direction = np.sign(move)  # 1.0 or -1.0 where walking (move ≠ 0)
         speed = direction * ((rvx * ny) - (rvy * nx))
         tx, ty = direction * ny, -direction * nx
-        d = k.radius + k.rho + ARRAYS.max(0.0, speed) * 0.5 / k.hover_frequency
+        d = k.front + ARRAYS.max(0.0, speed) * 0.5 / k.hover_frequency
         fx, fy = px - nx * k.ride_height, py - ny * k.ride_height
         ax, ay = fx + tx * d + nx * k.reach, fy + ty * d + ny * k.reach
         depth = (ax - hx) * nx + (ay - hy) * ny - k.clearance
         bx, by = ax - nx * depth, ay - ny * depth
-        rows = np.flatnonzero(walk & (depth > 0.0))
+        rows = (walk & (depth > 0.0)).nonzero()[0]
         may = np.zeros(len(walking), dtype=bool)
         if not len(rows):
             return may
-        treads = self._sweeps.nearest(rows, ax[rows], ay[rows], bx[rows], by[rows], 0.0)
+        of = slice(None) if len(rows) == len(walking) else rows  # every row: a view
+        treads = self._sweeps.nearest(rows, ax[of], ay[of], bx[of], by[of], 0.0)
         tread_of = treads.shape
         seen = tread_of != NO_HIT
         if not seen.any():
@@ -707,39 +709,25 @@ class Crowd:
         self, rows: NDArray[np.intp], own: NDArray[np.bool_]
     ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """The legs' effort in their last step (sensing.effort) of the members ``rows`` where
-        ``own``, else 0, N: on arrays, from the arrays of each one's last batch step without
-        building its readings (the members of one step at once), or from its own scalar
-        step's (then it is no longer ``stale``)."""
+        ``own``, else 0, N: read from the efforts of each one's last batch step
+        (:func:`_step_efforts`) without building its readings, or from its own scalar step's
+        (then it is no longer ``stale``)."""
         k = len(rows)
         ex, ey = np.zeros(k), np.zeros(k)
         fresh = own & self._unread[rows]
         members = self.members
-        for j in np.flatnonzero(own & ~fresh).tolist():
+        for j in (own & ~fresh).nonzero()[0].tolist():
             c = members[int(rows[j])]
             ex[j], ey[j] = effort(c.last_forces.drive, c.sensed)
         # The rows of one batch step at a time (all of them the last step's, but for a few).
         view_ids = self._view_id[rows]
-        while fresh.any():
-            first = int(np.argmax(fresh))
-            view = self._views[int(rows[first])]
-            at = np.flatnonzero(fresh & (view_ids == view_ids[first]))
-            fresh[at] = False
+        todo = fresh.nonzero()[0]
+        while len(todo):
+            same = view_ids[todo] == view_ids[todo[0]]
+            at, todo = todo[same], todo[~same]
             r = rows[at]
-            drive_on = view["drive_on"][r]
-            drive = (
-                np.where(drive_on, view["drive_x"][r], 0.0),
-                np.where(drive_on, view["drive_y"][r], 0.0),
-            )
-            _, _, nx, ny, *_ = view["hits"]
-            body, _, _, _, gx, gy, *_ = view["sensed"]
-            ex[at], ey[at] = _effort_on(
-                drive,
-                (nx[r], ny[r]),
-                (gx[r], gy[r]),
-                body.mass[r],
-                ARRAYS,
-                view["hit"][r] & drive_on,
-            )
+            step_x, step_y = _step_efforts(self._views[int(r[0])])
+            ex[at], ey[at] = step_x[r], step_y[r]
         return ex, ey
 
     def _weight_per_kg(self) -> NDArray[np.float64]:
@@ -945,6 +933,24 @@ def _hit_of(view: dict[str, Any], i: int) -> GroundHit | None:
         float(dist[i]), bool(walkable[i]), (float(gvx[i]), float(gvy[i])), (0.0, 0.0),
         (0.0, 0.0), float(gw[i]), False,
     )  # fmt: skip
+
+
+def _step_efforts(view: dict[str, Any]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The legs' effort (sensing.effort, N) of every member in the batch step of ``view`` (of
+    its batch members: a member that ran its own step reads its own), on arrays: made when
+    first read, once a step for all its members."""
+    efforts: tuple[NDArray[np.float64], NDArray[np.float64]] | None = view.get("effort")
+    if efforts is None:
+        drive_on = view["drive_on"]
+        drive = (
+            np.where(drive_on, view["drive_x"], 0.0),
+            np.where(drive_on, view["drive_y"], 0.0),
+        )
+        _, _, nx, ny, *_ = view["hits"]
+        body, _, _, _, gx, gy, *_ = view["sensed"]
+        holding = view["hit"] & drive_on
+        efforts = view["effort"] = _effort_on(drive, (nx, ny), (gx, gy), body.mass, ARRAYS, holding)
+    return efforts
 
 
 def _own(nxt: dict[str, Any], i: int) -> list[tuple[float, float, Category]]:

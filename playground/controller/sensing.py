@@ -261,7 +261,7 @@ def lean(
     px, py = perceived
     ax, ay = level
     angle = ops.atan2(ax * py - ay * px, ax * px + ay * py)
-    if ops.all((-max_lean <= angle) & (angle <= max_lean)):
+    if ops.all(abs(angle) <= max_lean):
         return perceived
     ex, ey = effort
     own = ops.atan2(ax * ey - ay * ex, weight + ax * ex + ay * ey)
