@@ -32,7 +32,6 @@ step, to the last bit.
 from __future__ import annotations
 
 import math
-import operator
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -84,6 +83,7 @@ _STATES = (None, GROUNDED, AIRBORNE)
 _RUNAWAY_TORQUE = RUNAWAY_FORCE * MAX_COORDINATE
 _COS_CORNER_TILT = math.cos(stairs.CORNER_TILT)
 _COS_TREAD_PARALLEL = math.cos(stairs.TREAD_PARALLEL)
+_NO_CONFIG = ControllerConfig()  # held by no member: its groups are made on its first step
 
 # The laws and the values they read, called on arrays (typed for floats, written for both).
 _law: Any = law
@@ -220,8 +220,6 @@ class Crowd:
         """Whether the crowd's hook runs the members (else each runs its own)."""
         self._poses = Poses()
         self._arbiters = pbatch.Buffer()
-        self._intents: list[Intent] = []
-        self._moves = np.zeros(0)
         self._configs: list[ControllerConfig] = []
         self._groups: list[_Group] = []
         self._rows_version = -1
@@ -322,9 +320,10 @@ class Crowd:
                 "touched_at",
             )
         }
-        # Each member's last ground: a GroundHit, or the view of the batch step it stood on.
-        self._last_ground: list[Any] = [None] * n
-        self._views: list[Any] = [None] * n
+        # Each member's last ground: a GroundHit, or the view of the batch step it stood on; and
+        # the view of its last batch step (object arrays: a step writes its members at once).
+        self._last_ground: NDArray[np.object_] = np.full(n, None, dtype=object)
+        self._views: NDArray[np.object_] = np.full(n, None, dtype=object)
         # Which members' readings are unread arrays of a batch step (``stale`` is the crowd), and
         # which batch step's (a count of steps; -1: none): their efforts come from the arrays.
         self._unread = np.zeros(n, dtype=bool)
@@ -333,7 +332,11 @@ class Crowd:
         self._rows_version = -1
         self._rows_key = b""
         self._rows_of = RowBodies([], self._ids[:0])
-        self._configs = []
+        # Each member's intent when its move was computed (None: not yet), and the configs the
+        # groups were made of (a config no member holds: made on the first step).
+        self._intents: list[Intent | None] = [None] * n
+        self._moves = np.zeros(n)
+        self._configs = [_NO_CONFIG] * n
         self._absorb_all()
 
     def _absorb_all(self) -> None:
@@ -397,25 +400,30 @@ class Crowd:
         wc = world.config
         dt = wc.dt
         # -- who may go batch: intents, laws, states ---------------------------------------------
+        # One pass over the members: each one's intent as a plain move (NaN: it asks for more),
+        # computed again only when its intent changed (a patrol keeps its intent between turns;
+        # a keyboard makes new ones); which follow other laws (NaN too: they run scalar; a move
+        # is within [-1, 1]); whether a config changed (the groups are made again).
         default_laws = members[0].default_laws
-        # Each member's intent as a plain move (NaN: it asks for more), computed again only when
-        # an intent changed (a patrol keeps its intent between turns; a keyboard makes new ones).
-        intents = [c.intent for c in members]
-        last = self._intents
-        if len(intents) != len(last):
-            self._moves = np.array([_plain_move(i) for i in intents], dtype=np.float64)
-        else:
-            moves = self._moves
-            for i in [i for i, a, b in zip(range(n), intents, last, strict=True) if a is not b]:
-                moves[i] = _plain_move(intents[i])
-        self._intents = intents
-        # NaN also marks a member under other laws, or removed: it runs scalar (a move is within
-        # [-1, 1]).
-        lawful = [c.laws is default_laws and not c.removed for c in members]
-        move = np.where(lawful, self._moves, math.nan)
+        intents, moves, configs = self._intents, self._moves, self._configs
+        lawless: list[int] = []
+        regroup = False
+        for i, c in enumerate(members):
+            intent = c.intent
+            if intent is not intents[i]:
+                intents[i] = intent
+                moves[i] = _plain_move(intent)
+            if c.laws is not default_laws:
+                lawless.append(i)
+            if c.config is not configs[i]:
+                regroup = True
+        move = moves.copy()
+        if lawless:
+            move[lawless] = math.nan
         ok = (self._code > 0) & ~np.isnan(move)
         move[~ok] = 0.0
-        self._regroup()
+        if regroup:
+            self._regroup()
         cur = self.cur
         for g in self._groups:
             cfg = g.config
@@ -570,7 +578,7 @@ class Crowd:
         # or scalar member) comes first, its own forces after it.
         version = world.gravity_version
         ok_list = ok.tolist()
-        scalar = [i for i, good in enumerate(ok_list) if not good]
+        scalar = np.flatnonzero(~ok).tolist()
         member_of = self._member_of
         start = 0
         for stop in [*scalar, n]:
@@ -600,26 +608,23 @@ class Crowd:
                     self._absorb(j)
                 break
         # -- commit the batch members' state ----------------------------------------------------
-        done = np.flatnonzero(ok)
         for k in ("ux", "uy", "short", "saturated", "grounded_at"):
-            cur[k][done] = nxt[k][done]
-        cur["push_x"][done] = 0.0
-        cur["push_y"][done] = 0.0
-        self._code[done] = nxt["code"][done]
-        views, last_ground = self._views, self._last_ground
+            np.copyto(cur[k], nxt[k], where=ok)
+        cur["push_x"][ok] = 0.0
+        cur["push_y"][ok] = 0.0
+        np.copyto(self._code, nxt["code"], where=ok)
+        # A member stays ``stale`` while nothing reads it: only those read since (or run scalar)
+        # are marked again.
+        unread = self._unread
+        for i in np.flatnonzero(ok & ~unread).tolist():
+            members[i].stale = self
+        unread[ok] = True
         self._steps_run += 1
-        self._unread[done] = True
-        self._view_id[done] = self._steps_run
-        if len(done) == n:  # every member (the usual step)
-            for c in members:
-                c.stale = self
-            views[:] = [nxt] * n
-        else:
-            for i in done.tolist():
-                members[i].stale = self
-                views[i] = nxt
-        for i in np.flatnonzero(ok & nxt["on_ground"]).tolist():
-            last_ground[i] = nxt  # this step's hit, built when read
+        self._view_id[ok] = self._steps_run
+        view = np.empty((), dtype=object)  # one object for a masked write (no sequence)
+        view[()] = nxt
+        self._views[ok] = view
+        self._last_ground[ok & nxt["on_ground"]] = view  # this step's hit, built when read
 
     def _row_bodies(self, rows: NDArray[np.intp]) -> RowBodies:
         """The bodies of the members ``rows``: the last step's again while they are the same."""
@@ -632,10 +637,8 @@ class Crowd:
         return self._rows_of
 
     def _regroup(self) -> None:
+        """The config groups and the arrays of the configs, made again (a config changed)."""
         configs = [c.config for c in self.members]
-        old = self._configs
-        if len(old) == len(configs) and all(map(operator.is_, old, configs)):
-            return
         self._configs = configs
         self._sweeps = Sweeps([c.senses.sweep for c in self.members])
         self._probe_length = np.array([cfg.probe_length for cfg in configs])

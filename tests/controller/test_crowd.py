@@ -7,6 +7,7 @@ member down the scalar path, so the fault catalogue still sees its break."""
 
 from __future__ import annotations
 
+import dataclasses
 import struct
 from typing import Any
 
@@ -138,6 +139,33 @@ def test_a_random_crowd_runs_as_one_as_it_runs_one_by_one(spec: dict[str, Any]) 
         scalar.step()
         batch.step()
         assert _readings(batch, sb) == _readings(scalar, sa), f"step {step}"
+
+
+READ_EVERY = 7
+"""Steps between two reads of one member's readings (each member at its own phase)."""
+
+
+def _last_ground(c: Controller) -> Any:
+    g = c.control_state.last_ground
+    if g is None:
+        return None
+    return [getattr(g, f.name) for f in dataclasses.fields(g) if f.name != "body"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(crowds)
+def test_readings_read_now_and_then_are_those_of_the_scalar_path(spec: dict[str, Any]) -> None:
+    """Law: a member read only every READ_EVERY steps (its readings unread arrays of older
+    steps in between) reads what its scalar step gave, its last ground too."""
+    scalar, sa = _crowd(spec, batch=False)
+    batch, sb = _crowd(spec, batch=True)
+    for step in range(STEPS):
+        scalar.step()
+        batch.step()
+        for i, (a, b) in enumerate(zip(sa, sb, strict=True)):
+            if (step + i) % READ_EVERY == 0:
+                assert _readings(batch, [b])[-1] == _readings(scalar, [a])[-1], f"step {step}"
+                assert _last_ground(b) == _last_ground(a), f"step {step}"
 
 
 def test_the_batch_path_runs_most_of_a_patrolling_crowd() -> None:
