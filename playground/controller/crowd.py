@@ -39,8 +39,8 @@ import pymunk
 import pymunk.batch as pbatch
 from numpy.typing import NDArray
 
-from playground._engine import raw
 from playground._engine.batch import Poses, touching_ids
+from playground._engine.inertia import Inertia
 from playground._engine.state import BodyState, body_motion, space_gravity
 from playground._engine.sweep import NO_HIT, Sweeps, sharp
 from playground.controller import laws as law
@@ -298,7 +298,7 @@ class Crowd:
             self._fresh()
         n = len(self.members)
         self._ids = np.array([c.body.id for c in self.members], dtype=np.uintp)
-        self._handles = [raw.handle(c.body) for c in self.members]
+        self._inertia = Inertia([c.body for c in self.members])
         self._member_of = {c.body: i for i, c in enumerate(self.members)}
         self._code = np.zeros(n, dtype=np.int8)
         self._names = [c.name for c in self.members]
@@ -434,8 +434,7 @@ class Crowd:
         # -- sensing ---------------------------------------------------------------------------
         poses = self._poses.read(world.space, self._ids)
         x, y, angle, vx, vy, spin = poses.T
-        handles = self._handles
-        mass = np.fromiter(map(raw.mass, handles), np.float64, n)
+        mass, moment = self._inertia.read()
         cos, sin = np.cos(angle), np.sin(angle)
         gx, gy, gux, guy, has_g = self._gravity(world)
         grounded_before = self._code == 1
@@ -535,7 +534,6 @@ class Crowd:
             if c.stale is self:
                 self.materialize(c)
         # -- deciding and acting, on arrays, per config -------------------------------------------
-        moment = np.fromiter(map(raw.moment, handles), np.float64, n)
         body = _BodyState(x, y, vx, vy, cos, sin, spin, mass, moment)
         zeros = np.zeros(n)
         frame_v = (gvx + zeros, gvy + zeros)
