@@ -31,6 +31,9 @@ from them (which tracked row each arbiter touches) is cached by checking them wi
 
 from __future__ import annotations
 
+import struct
+from collections.abc import Iterator
+
 import numpy as np
 import pymunk
 import pymunk.batch as batch
@@ -49,6 +52,7 @@ _VALUE_FIELDS = _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.NORMAL
 _each_cached_arbiter = lib.cpSpaceEachCachedArbiter
 _batched = ffi.addressof(lib, "pmSpaceArbiterIteratorFuncBatched")
 _unpack = ffi.unpack
+_impulse_rows = struct.Struct("=4d").iter_unpack  # (jx, jy, nx, ny) in native doubles
 _buffer = ffi.buffer
 _INT_SIZE = ffi.sizeof("uintptr_t")
 _FLOAT_SIZE = ffi.sizeof("cpFloat")
@@ -127,8 +131,8 @@ class ArbiterValues:
     Attributes:
         ids: id_a, id_b of each arbiter in turn (2·M ints); the same list object while the ids
             read are the same as the last read's.
-        values: jx, jy (the impulse on body A, N·s), nx, ny (the normal, from A to B) of each
-            arbiter in turn (4·M floats).
+
+    Their floats come from :meth:`values`.
 
     >>> import pymunk
     >>> space = pymunk.Space()
@@ -141,17 +145,16 @@ class ArbiterValues:
     ...     space.step(0.01)
     >>> arbiters = ArbiterValues()
     >>> arbiters.read(space)
-    >>> box.id in arbiters.ids, len(arbiters.values)
-    (True, 4)
+    >>> box.id in arbiters.ids, len(list(arbiters.values()))
+    (True, 1)
     """
 
-    __slots__ = ("_int_bytes", "_walk", "ids", "values")
+    __slots__ = ("_int_bytes", "_walk", "ids")
 
     def __init__(self) -> None:
         self._walk = _Walk(_VALUE_FIELDS)
         self._int_bytes = b""
         self.ids: list[int] = []
-        self.values: list[float] = []
 
     def read(self, space: pymunk.Space) -> None:
         """Read every arbiter of ``space`` now."""
@@ -161,4 +164,10 @@ class ArbiterValues:
         if raw != self._int_bytes:
             self._int_bytes = raw
             self.ids = _unpack(walk.i.arr, walk.i.num)
-        self.values = _unpack(walk.f.arr, walk.f.num)
+
+    def values(self) -> Iterator[tuple[float, float, float, float]]:
+        """(jx, jy, nx, ny) of each arbiter of the last read, in turn: the impulse on body A
+        (N·s) and the normal, from A to B. Unpacked from the walk's doubles by ``struct`` as
+        they are iterated (no list, no Python loop); valid until the next read."""
+        f = self._walk.f
+        return _impulse_rows(_buffer(f.arr, _FLOAT_SIZE * f.num))

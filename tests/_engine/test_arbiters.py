@@ -59,7 +59,8 @@ def test_readers_read_what_get_space_arbiters_reads() -> None:
         assert rows.values.tobytes() == floats
         ints, floats = _reference(space, _A.BODY_A_ID | _A.BODY_B_ID | _A.TOTAL_IMPULSE | _A.NORMAL)
         assert values.ids == ints
-        assert struct.pack(f"{len(values.values)}d", *values.values) == floats
+        flat = [v for row in values.values() for v in row]
+        assert struct.pack(f"{len(flat)}d", *flat) == floats
         read = (rows.pairs.tolist(), rows.first.tolist())
         if last is not None:
             same = read == last[2]

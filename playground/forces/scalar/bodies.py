@@ -137,7 +137,6 @@ class ScalarBodies:
             _add_forces(field, sleeping=self.check_sleep)
         self._field = field is not None
         self._summed = 0
-        split = self.contact_split
         get_velocity, angular_velocity = raw.get_velocity, raw.angular_velocity
         get_force, torque = raw.get_force, raw.torque
         for r in self.rows:
@@ -151,9 +150,6 @@ class ScalarBodies:
             r.seen = True
             if field is not None:
                 r.ffx, r.ffy = field.get(r.body, (0.0, 0.0))
-            if split:
-                r.jx = r.jy = r.jnx = r.jny = 0.0
-                r.unknown = False
         if substeps > 1:
             self._held = _forces_on(self.space)
 

@@ -6,7 +6,13 @@ plain floats, read one of two ways. With a few bodies in the space per tracked r
 arbiter that may report an impulse not applied, below), every arbiter of the space is read in
 one batch call (:class:`~playground._engine.arbiters.ArbiterValues`) and each row's terms are
 found by a plan made again only when the arbiters' ids change: at ten tracked boxes a third of
-the cost of the walk (:data:`ONE_READ_MIN_ROWS`, :data:`ONE_READ_BODIES_PER_ROW`). Otherwise
+the cost of the walk (:data:`ONE_READ_MIN_ROWS`, :data:`ONE_READ_BODIES_PER_ROW`). Each arbiter's
+term is then worked out once for both its bodies, and on a step's first substep (the only one
+with a single substep a step) the plan's rows are grouped by the signs of their terms, so a term
+of body B is subtracted rather than negated and added: the same doubles, about half the Python
+float operations of summing each body's terms apart (``benchmarks/step_instructions.py --pile 10
+--split``). The first substep sets the sums rather than adding to them, so nothing zeroes the
+rows before a step. Otherwise
 each row's arbiters are walked with ``Body.each_arbiter``. Inside that callback Chipmunk
 presents each arbiter from the body's side: ``total_impulse`` is the impulse the body received
 and ``normal`` points away from it, so they are the batch implementation's +J, +n for body A and
@@ -25,6 +31,7 @@ the tracked bodies' arbiters only (the only ones whose split is read).
 from __future__ import annotations
 
 from collections import deque
+from dataclasses import dataclass, field
 from typing import Any
 
 import pymunk
@@ -77,6 +84,7 @@ class ContactSums:
         "_arbiters",
         "_flags",
         "_impulses",
+        "_marked",
         "_pairs",
         "_plan",
         "_plan_ids",
@@ -92,11 +100,12 @@ class ContactSums:
         self._impulses: list[Impulse] = []
         self._flags: list[Flags] = []
         self._pairs = False
+        self._marked: list[Row] = []  # the rows set unknown since the step's first substep
         self._visit = raw.arbiter_callback(self._read)
         # The one read of every arbiter, and its plan: which arbiter's terms go to which row,
         # made again when the arbiters' ids or the rows change.
         self._arbiters = ArbiterValues()
-        self._plan: _Plan = ([], [], [])
+        self._plan = _Plan()
         self._plan_ids: list[int] | None = None
         self._plan_rows: list[Row] | None = None
 
@@ -113,14 +122,19 @@ class ContactSums:
         ``unknown`` on a row with an arbiter that may report an impulse not applied.
 
         ``stamp`` counts the space's steps (1 for its first); ``rescaled``: this substep's length
-        differs from the one before it; ``fresh``: every row's sums are +0.0 (the step's first
-        substep).
+        differs from the one before it; ``fresh``: the step's first substep, whose terms start
+        every row's sums at +0.0 and every ``unknown`` at False (the rows are not zeroed
+        before).
 
         With at least :data:`ONE_READ_MIN_ROWS` rows and at most :data:`ONE_READ_BODIES_PER_ROW`
         bodies in the space per row, when no arbiter can report an impulse not applied (arbiters
         dropped at once, the warm start not rescaled), every arbiter of the space is read in one
         batch call instead of walking each row's: the same terms, added in the same order.
         """
+        if fresh and self._marked:
+            for r in self._marked:
+                r.unknown = False
+            self._marked.clear()
         persistence = raw.collision_persistence(raw.space_handle(space))
         n = len(rows)
         if (
@@ -146,6 +160,8 @@ class ContactSums:
                 each_arbiter(r.h, visit, null)
             else:
                 r.body.each_arbiter(self._read_arbiter)
+            if fresh:
+                r.jx = r.jy = r.jnx = r.jny = 0.0
             if not impulses:
                 continue
             # Summed in the order of their values, as the batch implementation does.
@@ -170,44 +186,91 @@ class ContactSums:
             for first, key, _ in flags:
                 if (rescaled and not first) or (first and (cached_all or key in old)):
                     r.unknown = True
+                    self._marked.append(r)
 
     def _add_all(self, rows: list[Row], space: pymunk.Space, fresh: bool) -> None:
-        """Add every row's terms from one read of every arbiter: a row's terms in the order of
-        their values, as the walk adds them, but two on a fresh row as they come ((0 + x) + y
-        = (0 + y) + x, bit for bit). A term of body B is subtracted: x − y is x + (−y)."""
+        """Add every row's terms from one read of every arbiter, as the walk adds them: a row's
+        terms in the order of their values. Each arbiter's term for its body A is worked out
+        once (J and its normal part); body B's is its negation, the values the walk reads from
+        B's side (Chipmunk gives B −J and −n; their dot product is J·n, bit for bit).
+
+        On a fresh row the order does not matter ((0 + x) + y = (0 + y) + x, bit for bit), and
+        a term of body B is subtracted instead of negated and added (x − y is x + (−y)): the
+        plan sorts the rows by their terms' signs, so no negation is made."""
         arbiters = self._arbiters
         arbiters.read(space)
         ids = arbiters.ids
         if ids is not self._plan_ids or rows is not self._plan_rows:
             self._plan = _plan(rows, ids)
             self._plan_ids, self._plan_rows = ids, rows
-        f = arbiters.values
-        ones, twos, more = self._plan
-        for r, k, s in ones:
-            jx, jy, nx, ny = f[k : k + 4]
-            dot = jx * nx + jy * ny
-            r.jx += s * jx
-            r.jy += s * jy
-            r.jnx += s * (nx * dot)
-            r.jny += s * (ny * dot)
-        for r, k, s, k2, s2 in twos:
-            jx, jy, nx, ny = f[k : k + 4]
-            dot = jx * nx + jy * ny
-            ax, ay, anx, any_ = s * jx, s * jy, s * (nx * dot), s * (ny * dot)
-            jx, jy, nx, ny = f[k2 : k2 + 4]
-            dot = jx * nx + jy * ny
-            bx, by, bnx, bny = s2 * jx, s2 * jy, s2 * (nx * dot), s2 * (ny * dot)
-            if not fresh and (bx, by, bnx, bny) < (ax, ay, anx, any_):
-                ax, ay, anx, any_, bx, by, bnx, bny = bx, by, bnx, bny, ax, ay, anx, any_
-            r.jx = r.jx + ax + bx
-            r.jy = r.jy + ay + by
-            r.jnx = r.jnx + anx + bnx
-            r.jny = r.jny + any_ + bny
-        for r, terms in more:
-            impulses = [_term(f, k, s) for k, s in terms]
-            impulses.sort()
+        terms = [
+            (jx, jy, nx * (dot := jx * nx + jy * ny), ny * dot)
+            for jx, jy, nx, ny in arbiters.values()
+        ]
+        plan = self._plan
+        if fresh:
+            for r, i in plan.a:
+                jx, jy, jnx, jny = terms[i]
+                r.jx = 0.0 + jx
+                r.jy = 0.0 + jy
+                r.jnx = 0.0 + jnx
+                r.jny = 0.0 + jny
+            for r, i in plan.b:
+                jx, jy, jnx, jny = terms[i]
+                r.jx = 0.0 - jx
+                r.jy = 0.0 - jy
+                r.jnx = 0.0 - jnx
+                r.jny = 0.0 - jny
+            for r, i, k in plan.aa:
+                ax, ay, anx, any_ = terms[i]
+                bx, by, bnx, bny = terms[k]
+                r.jx = 0.0 + ax + bx
+                r.jy = 0.0 + ay + by
+                r.jnx = 0.0 + anx + bnx
+                r.jny = 0.0 + any_ + bny
+            for r, i, k in plan.ab:
+                ax, ay, anx, any_ = terms[i]
+                bx, by, bnx, bny = terms[k]
+                r.jx = 0.0 + ax - bx
+                r.jy = 0.0 + ay - by
+                r.jnx = 0.0 + anx - bnx
+                r.jny = 0.0 + any_ - bny
+            for r, i, k in plan.bb:
+                ax, ay, anx, any_ = terms[i]
+                bx, by, bnx, bny = terms[k]
+                r.jx = 0.0 - ax - bx
+                r.jy = 0.0 - ay - by
+                r.jnx = 0.0 - anx - bnx
+                r.jny = 0.0 - any_ - bny
+            for r in plan.idle:
+                r.jx = r.jy = r.jnx = r.jny = 0.0
+        else:
+            terms += [(-jx, -jy, -jnx, -jny) for jx, jy, jnx, jny in terms]
+            for r, k in plan.one:
+                jx, jy, jnx, jny = terms[k]
+                r.jx += jx
+                r.jy += jy
+                r.jnx += jnx
+                r.jny += jny
+            for r, k, k2 in plan.two:
+                a, b = terms[k], terms[k2]
+                if b < a:
+                    a, b = b, a
+                ax, ay, anx, any_ = a
+                bx, by, bnx, bny = b
+                r.jx = r.jx + ax + bx
+                r.jy = r.jy + ay + by
+                r.jnx = r.jnx + anx + bnx
+                r.jny = r.jny + any_ + bny
+        if not plan.many:
+            return
+        if fresh:
+            terms += [(-jx, -jy, -jnx, -jny) for jx, jy, jnx, jny in terms]
+        for r, found in plan.many:
+            if fresh:
+                r.jx = r.jy = r.jnx = r.jny = 0.0
             jx, jy, jnx, jny = r.jx, r.jy, r.jnx, r.jny
-            for vx, vy, vnx, vny in impulses:
+            for vx, vy, vnx, vny in sorted(terms[k] for k in found):
                 jx += vx
                 jy += vy
                 jnx += vnx
@@ -261,41 +324,58 @@ class ContactSums:
         self._flags.append((raw.is_first_contact(arb) != 0, key, fit))
 
 
-_Plan = tuple[
-    list[tuple[Row, int, float]],
-    list[tuple[Row, int, float, int, float]],
-    list[tuple[Row, list[tuple[int, float]]]],
-]
-"""The rows with one term, two, and three or more: each term as (offset of the arbiter's four
-values, its sign: +1.0 if the row's body is the arbiter's body A, −1.0 if B; a product with ±1.0
-is exact)."""
+@dataclass(frozen=True, slots=True)
+class _Plan:
+    """Which terms of a substep go to which row. A term is an index into the substep's terms:
+    arbiter i's term for its body A is i, for its body B (the negation) M + i, M arbiters.
+
+    Attributes:
+        one, two: the rows with one term, two: (row, term) and (row, term, term), for a step's
+            later substeps.
+        many: the rows with three or more, each with its terms (any substep).
+        a, b: the rows with one term, of an arbiter whose body A (B) is the row's: (row,
+            arbiter), for a step's first substep.
+        aa, ab, bb: the rows with two terms: (row, arbiter, arbiter), the row's body A of both,
+            A of the first and B of the second, B of both; for a step's first substep.
+        idle: the rows without a term.
+    """
+
+    one: list[tuple[Row, int]] = field(default_factory=list)
+    two: list[tuple[Row, int, int]] = field(default_factory=list)
+    many: list[tuple[Row, list[int]]] = field(default_factory=list)
+    a: list[tuple[Row, int]] = field(default_factory=list)
+    b: list[tuple[Row, int]] = field(default_factory=list)
+    aa: list[tuple[Row, int, int]] = field(default_factory=list)
+    ab: list[tuple[Row, int, int]] = field(default_factory=list)
+    bb: list[tuple[Row, int, int]] = field(default_factory=list)
+    idle: list[Row] = field(default_factory=list)
 
 
 def _plan(rows: list[Row], ids: list[int]) -> _Plan:
     """Which arbiters' terms go to which row, for arbiters between ``ids`` (id_a, id_b, …)."""
+    m = len(ids) // 2
     row_of = {raw.body_id(r.body): r for r in rows}
-    terms: dict[int, list[tuple[int, float]]] = {}
-    for i in range(0, len(ids), 2):
-        for body_id, sign in ((ids[i], 1.0), (ids[i + 1], -1.0)):
+    terms: dict[int, list[int]] = {}
+    for i in range(m):
+        for body_id, term in ((ids[2 * i], i), (ids[2 * i + 1], m + i)):
             if body_id in row_of:
-                terms.setdefault(body_id, []).append((2 * i, sign))
-    ones: list[tuple[Row, int, float]] = []
-    twos: list[tuple[Row, int, float, int, float]] = []
-    more: list[tuple[Row, list[tuple[int, float]]]] = []
-    for body_id, found in terms.items():
-        r = row_of[body_id]
-        if len(found) == 1:
-            ones.append((r, *found[0]))
-        elif len(found) == 2:
-            twos.append((r, *found[0], *found[1]))
+                terms.setdefault(body_id, []).append(term)
+    plan = _Plan()
+    for body_id, r in row_of.items():
+        found = terms.get(body_id, [])
+        if len(found) > 2:
+            plan.many.append((r, found))
+            continue
+        if not found:
+            plan.idle.append(r)
+            continue
+        on_a = sorted(found, key=lambda k: k >= m)  # A's terms first
+        if len(on_a) == 1:
+            plan.one.append((r, found[0]))
+            (plan.a if on_a[0] < m else plan.b).append((r, on_a[0] % m))
         else:
-            more.append((r, found))
-    return ones, twos, more
-
-
-def _term(f: list[float], k: int, s: float) -> Impulse:
-    """An arbiter's term for body A (``s`` = 1.0) or B (−1.0): the values the walk over the
-    body's arbiters reads (Chipmunk gives B −J and −n; their dot product is J·n, bit for bit)."""
-    jx, jy, nx, ny = f[k : k + 4]
-    dot = jx * nx + jy * ny
-    return (s * jx, s * jy, s * (nx * dot), s * (ny * dot))
+            plan.two.append((r, found[0], found[1]))
+            first, second = on_a
+            pairs = plan.aa if second < m else plan.ab if first < m else plan.bb
+            pairs.append((r, first % m, second % m))
+    return plan
