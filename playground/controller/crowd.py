@@ -32,6 +32,7 @@ step, to the last bit.
 from __future__ import annotations
 
 import math
+import struct
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -84,6 +85,7 @@ _RUNAWAY_TORQUE = RUNAWAY_FORCE * MAX_COORDINATE
 _COS_CORNER_TILT = math.cos(stairs.CORNER_TILT)
 _COS_TREAD_PARALLEL = math.cos(stairs.TREAD_PARALLEL)
 _NO_CONFIG = ControllerConfig()  # held by no member: its groups are made on its first step
+_MOTION = struct.Struct("3d")  # a body's (vx, vy, w) as bytes, compared bit for bit
 
 # The laws and the values they read, called on arrays (typed for floats, written for both).
 _law: Any = law
@@ -177,29 +179,50 @@ class _Rows:
 class _Grounds:
     """What a crowd's probes found, by the shape hit (:attr:`Hits.shapes
     <playground._engine.sweep.Hits.shapes>`; most hit one floor), a row each, and a last row
-    for :data:`~playground._engine.sweep.NO_HIT` (-1), where nothing was found."""
+    for :data:`~playground._engine.sweep.NO_HIT` (-1), where nothing was found; made from what
+    :meth:`read` reads of the shapes, and made again only when that changes (most steps every
+    probe finds the one floor, as it was)."""
 
-    __slots__ = ("bodies", "kinds", "motion")
+    __slots__ = ("bodies", "kinds", "motion", "readings")
 
-    def __init__(self, shapes: list[pymunk.Shape]) -> None:
-        bodies: list[pymunk.Body | None] = [s.body for s in shapes]
-        kinds: list[tuple[bool, bool, bool]] = []
-        motion: list[tuple[float, float, float]] = []
-        for s, b in zip(shapes, bodies, strict=True):
+    @staticmethod
+    def read(shapes: list[pymunk.Shape]) -> list[tuple[Any, ...]]:
+        """What the rows are made of, a tuple a shape: the shape, its body and, if it has one,
+        whether the body is static and does not turn, its motion (:data:`_MOTION`: bit for
+        bit) and whether the shape has sharp corners."""
+        readings: list[tuple[Any, ...]] = []
+        for s in shapes:
+            b = s.body
             if b is None:
+                readings.append((s, None))
+                continue
+            kind, vx, vy, w = body_motion(b)
+            readings.append((s, b, kind == STATIC and w == 0.0, _MOTION.pack(vx, vy, w), sharp(s)))
+        return readings
+
+    def __init__(self, readings: list[tuple[Any, ...]]) -> None:
+        self.readings = readings
+        """What it was made of (:meth:`read`)."""
+        bodies: list[pymunk.Body | None] = []
+        kinds: list[tuple[bool, bool, bool]] = []
+        motion: list[tuple[float, ...]] = []
+        for shape_reading in readings:
+            if shape_reading[1] is None:
+                bodies.append(None)
                 kinds.append((False, False, False))
                 motion.append((0.0, 0.0, 0.0))
                 continue
-            kind, vx, vy, w = body_motion(b)
-            kinds.append((True, kind == STATIC and w == 0.0, sharp(s)))
-            motion.append((vx, vy, w))
+            _, b, still, moves, corners = shape_reading
+            bodies.append(b)
+            kinds.append((True, still, corners))
+            motion.append(_MOTION.unpack(moves))
         bodies.append(None)
         kinds.append((False, False, False))
         motion.append((0.0, 0.0, 0.0))
         self.bodies = np.empty(len(bodies), dtype=object)
         """Its body (None: nothing found, or a shape without a body, which is no ground)."""
-        for k, b in enumerate(bodies):  # one by one: a list would be searched for sequences
-            self.bodies[k] = b
+        for k, body in enumerate(bodies):  # one by one: a list would be searched for sequences
+            self.bodies[k] = body
         self.kinds = np.array(kinds, dtype=bool)
         """Three columns: it has a body; that body is static and does not turn; the shape has
         sharp corners (:func:`~playground._engine.sweep.sharp`)."""
@@ -220,6 +243,7 @@ class Crowd:
         """Whether the crowd's hook runs the members (else each runs its own)."""
         self._poses = Poses()
         self._arbiters = pbatch.Buffer()
+        self._grounds = _Grounds([])
         self._configs: list[ControllerConfig] = []
         self._groups: list[_Group] = []
         self._rows_version = -1
@@ -491,7 +515,11 @@ class Crowd:
             (y - uy * self._probe_length)[of],
             self._probe_radius[of],
         )
-        grounds = _Grounds(found.shapes)
+        # What they found, as last step while it is the same (_Grounds.read).
+        readings = _Grounds.read(found.shapes)
+        if readings != self._grounds.readings:
+            self._grounds = _Grounds(readings)
+        grounds = self._grounds
         shape_of = found.shape
         solid, still, corners = grounds.kinds[shape_of].T
         # Grounded and finding nothing, its own step looks for a tread to step down to
