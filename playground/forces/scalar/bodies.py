@@ -331,11 +331,13 @@ class ScalarBodies:
     def runaway(self, bound: float) -> tuple[int, int, float] | None:
         """The first engine force component (column 0: x, 1: y) that is not finite or beyond
         ±``bound`` (N), as (body id, column, value), or None: what the batch implementation
-        finds."""
+        finds. (Chained comparisons, not ``abs``: the same test, NaN failing it, without a call
+        per component.)"""
+        low = -bound
         for r in self.rows:
-            if not abs(r.ex) <= bound:
+            if not low <= r.ex <= bound:
                 return r.body.id, 0, r.ex
-            if not abs(r.ey) <= bound:
+            if not low <= r.ey <= bound:
                 return r.body.id, 1, r.ey
         return None
 
