@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 import struct
+import sys
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -81,6 +82,9 @@ APPLIED = Category.APPLIED
 STATIC = pymunk.Body.STATIC
 _CODES = {GROUNDED: 1, AIRBORNE: 2}
 _STATES = (None, GROUNDED, AIRBORNE)
+_GROUNDED_CODE, _AIRBORNE_CODE = np.int8(_CODES[GROUNDED]), np.int8(_CODES[AIRBORNE])
+_STANDING = ControllerState(GROUNDED)
+"""The state the hover reads of a batch member (it reads only whether it is getting up)."""
 _RUNAWAY_TORQUE = RUNAWAY_FORCE * MAX_COORDINATE
 _COS_CORNER_TILT = math.cos(stairs.CORNER_TILT)
 _COS_TREAD_PARALLEL = math.cos(stairs.TREAD_PARALLEL)
@@ -115,7 +119,7 @@ class _Group:
     """Members sharing one config (equal configs: one group): their rows, a slice where they
     follow one another (one config for all: every row), which indexes a view, not a copy."""
 
-    __slots__ = ("config", "cos_slope", "rows")
+    __slots__ = ("_gravity", "config", "cos_slope", "rows", "size")
 
     def __init__(self, config: ControllerConfig, rows: list[int]) -> None:
         self.config = config
@@ -125,7 +129,32 @@ class _Group:
             if last - first + 1 == len(rows)
             else np.array(rows, dtype=np.intp)
         )
+        self.size = len(rows)
         self.cos_slope = math.cos(config.max_slope)
+        self._gravity: tuple[Any, ...] = (None,)
+
+    def shared(self, body: Any, gravity: tuple[Any, Any]) -> tuple[Any, Any]:
+        """The members' ``body`` and ``gravity`` (m/s²) for the laws, with the mass (kg) and
+        each component of the gravity one float where every member of the group holds the
+        same (to the bit): what follows from it alone the laws then work out once, not row by
+        row. The gravity's arrays are made again when it changes: its floats are kept."""
+        gx, gy = gravity
+        if self._gravity[0] is not gx or self._gravity[1] is not gy:
+            self._gravity = (gx, gy, (_one(gx, self.rows, gx), _one(gy, self.rows, gy)))
+        m = _one(body.mass, self.rows, None)
+        if m is not None:
+            body = _BodyState(
+                body.x, body.y, body.vx, body.vy, body.cos, body.sin, body.spin, m, body.moment
+            )
+        return body, self._gravity[2]
+
+
+def _one(a: NDArray[np.float64], rows: slice | NDArray[np.intp], other: Any) -> Any:
+    """The one value of ``a``'s ``rows`` as a float if they all hold it, bit for bit (0.0 is
+    not -0.0), else ``other``."""
+    values = a[rows]
+    bits = values.view(np.int64)
+    return float(values[0]) if (bits == bits[0]).all() else other
 
 
 class _ConfigArrays:
@@ -572,15 +601,15 @@ class Crowd:
             (x - hx) * ux + (y - hy) * uy,
             False,
             frame_v,
-            (zeros, zeros),
-            (zeros, zeros),
+            (0.0, 0.0),  # a batch member's ground does not turn nor move of itself
+            (0.0, 0.0),
             gw,
             False,
         )
         sensed = _Sensed(body, (ux, uy), t, dt, wc.substeps, (gx, gy))
         nxt = self._act(sensed, hits, hit, move, ok, t, dt, (lx, ly))
-        nxt["code_before"] = self._code.copy()
-        nxt["short_before"] = cur["short"].copy()
+        nxt["code_before"] = self._code  # the commit below makes new ones
+        nxt["short_before"] = cur["short"]
         nxt["ground"] = ground
         nxt["hit"] = hit
         nxt["hits"] = (hx, hy, nx, ny, gvx, gvy, gw, hits.distance, nxt["walkable"])
@@ -593,7 +622,7 @@ class Crowd:
         if len(rows):
             block = ForceRows(
                 self._row_bodies(rows),
-                np.stack([nxt["fx"][rows], nxt["fy"][rows]], axis=1),
+                nxt["force"][rows],
                 nxt["torque"][rows],
                 nxt["parts"][rows],
             )
@@ -634,11 +663,13 @@ class Crowd:
                     self._absorb(j)
                 break
         # -- commit the batch members' state ----------------------------------------------------
+        # New arrays, not written over: the views of this step read the ones before it (the
+        # state, the balance's shortfall and the push before the step).
         for k in ("ux", "uy", "short", "saturated", "grounded_at"):
-            np.copyto(cur[k], nxt[k], where=ok)
-        cur["push_x"][ok] = 0.0
-        cur["push_y"][ok] = 0.0
-        np.copyto(self._code, nxt["code"], where=ok)
+            cur[k] = np.where(ok, nxt[k], cur[k])
+        cur["push_x"] = np.where(ok, 0.0, cur["push_x"])
+        cur["push_y"] = np.where(ok, 0.0, cur["push_y"])
+        self._code = np.where(ok, nxt["code"], self._code)
         # A member stays ``stale`` while nothing reads it: only those read since (or run scalar)
         # are marked again.
         unread = self._unread
@@ -814,7 +845,10 @@ class Crowd:
         forces are beyond the runaway bounds, that finds ground too steep to stand on (it
         slides, or is about to) or that loses its ground (the state holds GROUNDED for
         ``footing_time``): the scalar step decides those. Slopes are measured against
-        ``level`` (the field's up, or up)."""
+        ``level`` (the field's up, or up).
+
+        The readings read only when a member's are built (:meth:`materialize`: whether each
+        force acts, the load) are left for then: the arrays hold what they are made of."""
         n = len(move)
         cur = self.cur
         nx, ny = hits.normal
@@ -822,77 +856,89 @@ class Crowd:
         lx, ly = level
         grounded_before = self._code == 1
         out: dict[str, Any] = {"ux": ux, "uy": uy, "lx": lx, "ly": ly}
-        out["load"] = np.maximum(0.0, -(cur["push_x"] * ux + cur["push_y"] * uy)) + 0.0
+        out["push"] = (cur["push_x"], cur["push_y"])  # for the load (the commit makes new ones)
         # One config for every member (the usual crowd) takes each group's arrays as they are;
         # several fill their rows of arrays of all members.
         put = _Rows(out, n, self._groups)
-        state = ControllerState(GROUNDED)
+        bounded = True  # whether each member's torque is within t_cap (below) by its budget
+        t_cap = _RUNAWAY_TORQUE if self.world.config.guard else math.inf
         for g in self._groups:
             cfg = g.config
             r = g.rows
-            walkable = (nx * lx + ny * ly >= g.cos_slope) & hit
+            # (No ground: a normal of 0, and max_slope < π/2.)
+            walkable = nx * lx + ny * ly >= g.cos_slope
             grounded = walkable  # on walkable ground, and not rising: a batch member never is
-            ok[r] &= ~(hit & ~walkable)[r] & ~(grounded_before & ~grounded)[r]
+            # Ground too steep to stand on, or none where it stood: its own step decides.
+            ok[r] &= (walkable | ~(hit | grounded_before))[r]
             short = cur["short"]
             saturated = np.where(short == 1.0, cur["saturated"] + dt, 0.0)
             saturated = np.where(short < 0.0, cur["saturated"], saturated)
-            put("code", r, np.where(grounded, 1, 2).astype(np.int8))
+            put("code", r, np.where(grounded, _GROUNDED_CODE, _AIRBORNE_CODE))
             put("grounded_at", r, np.where(grounded, t, cur["grounded_at"]))
             put("saturated", r, saturated)
             put("on_ground", r, grounded)
             put("walkable", r, walkable)
-            hover = _law.hover(sensed, state, hits, cfg, ARRAYS)
-            hover = np.where(grounded, hover, 0.0)
-            hvx, hvy = hover * nx, hover * ny
-            dvx, dvy = _law.drive(sensed, hits, move, hover, cfg, ARRAYS)
-            svx, svy = _law.steer(sensed, move, cfg, ARRAYS)
-            hover_on = grounded & (hover > 0.0)
-            # ops.vector's zero: f = 0 (a unit direction has a component of at least 0.7).
-            drive_on = grounded & ((dvx != 0.0) | (dvy != 0.0))
-            steer_on = ~grounded & (move != 0.0) & ((svx != 0.0) | (svy != 0.0))
-            # The same additions as add_all: 0.0, then each force in order (support, then
-            # applied: a member has one or the other).
-            sx = 0.0 + np.where(hover_on, hvx, 0.0) + np.where(drive_on, dvx, 0.0)
-            sy = 0.0 + np.where(hover_on, hvy, 0.0) + np.where(drive_on, dvy, 0.0)
-            ax = np.where(steer_on, svx, 0.0)
-            ay = np.where(steer_on, svy, 0.0)
-            put("fx", r, sx + ax)
-            put("fy", r, sy + ay)
+            # The laws read the values all the group's members share as one float (a mass, the
+            # gravity): what follows from them alone is worked out once, not for every row.
+            on = np.count_nonzero(grounded[r])
+            body, gravity = g.shared(sensed.body, sensed.gravity)
+            at = _Sensed(body, sensed.up, t, dt, sensed.substeps, gravity)
             parts = np.zeros((n, 6))  # [px, py, ax, ay, sx, sy]: no contact part
-            parts[:, 2], parts[:, 3], parts[:, 4], parts[:, 5] = 0.0 + ax, 0.0 + ay, sx, sy
+            if on:
+                hover = _law.hover(at, _STANDING, hits, cfg, ARRAYS)
+                if on < g.size:
+                    hover = np.where(grounded, hover, 0.0)
+                hvx, hvy = hover * nx, hover * ny
+                dvx, dvy = _law.drive(at, hits, move, hover, cfg, ARRAYS)
+                # The same additions as add_all: 0.0, then each force in order. A force that
+                # does not act adds 0.0 as well: its magnitude is 0 (a hover of 0 along the
+                # normal is ±0.0; ops.vector's zero is 0.0), and 0.0 + x is never -0.0.
+                np.add(0.0 + hvx, dvx, out=parts[:, 4])
+                np.add(0.0 + hvy, dvy, out=parts[:, 5])
+                put("hover", r, hover)
+                put("hover_x", r, hvx)
+                put("hover_y", r, hvy)
+            else:
+                dvx = dvy = parts[:, 4]
+            if on < g.size:
+                # Airborne and moving, the air steering (applied: a member has support or
+                # applied forces, never both, so the other pair of parts is 0.0 and the force
+                # their sum).
+                svx, svy = _law.steer(at, move, cfg, ARRAYS)
+                steer = ~grounded & (move != 0.0)
+                ax, ay = np.where(steer, svx, 0.0), np.where(steer, svy, 0.0)
+                parts[:, 2], parts[:, 3] = 0.0 + ax, 0.0 + ay
+                dvx, dvy = np.where(grounded, dvx, ax), np.where(grounded, dvy, ay)
+                put("force", r, parts[:, 4:6] + parts[:, 2:4])
+            else:
+                put("force", r, parts[:, 4:6])
             put("parts", r, parts)
+            # The drive's or the steering's force (0.0 where none acts: ops.vector's zero).
+            put("drive_x", r, dvx)
+            put("drive_y", r, dvy)
+            put("drive_on", r, (dvx != 0.0) | (dvy != 0.0))
             if cfg.lock_rotation:
-                put("torque", r, np.zeros(n))
                 put("balance", r, np.zeros(n))
-                put("short", r, np.full(n, -1.0))
-                put("locked", r, np.ones(n, dtype=bool))
+                put("torque", r, np.zeros(n))
+                put("short", r, np.full(n, -1.0))  # no balance acts (read as locked)
             else:
                 # Relative to the ground's spin (0 off the ground: the same subtraction).
-                need = _law.balance(sensed, hits, cfg, ARRAYS)
-                budget = cfg.balance_budget(sensed.body.mass)
-                torque = ARRAYS.max(-budget, ARRAYS.min(budget, need))
-                touching = grounded  # nothing else touches a batch member
-                put("short", r, ((np.abs(need) > budget) & touching).astype(np.float64))
+                need = _law.balance(at, hits, cfg, ARRAYS)
+                budget = cfg.balance_budget(body.mass)
+                torque = ARRAYS.max(-budget, ARRAYS.min(budget, need))  # within ±budget
+                bounded &= isinstance(budget, float) and budget <= t_cap
+                short = np.abs(need) > budget
+                if on < g.size:
+                    short &= grounded  # touching: nothing else touches a batch member
+                put("short", r, short.astype(np.float64))
                 put("balance", r, torque)
                 put("torque", r, 0.0 + torque)
-                put("locked", r, np.zeros(n, dtype=bool))
-            put("hover_x", r, np.where(grounded, hvx, 0.0))
-            put("hover_y", r, np.where(grounded, hvy, 0.0))
-            moving = move != 0.0
-            put("drive_x", r, np.where(grounded, dvx, np.where(moving, svx, 0.0)))
-            put("drive_y", r, np.where(grounded, dvy, np.where(moving, svy, 0.0)))
-            put("hover_on", r, hover_on)
-            put("drive_on", r, drive_on | steer_on)
-            put("steer_on", r, steer_on)
-        cap = RUNAWAY_FORCE if self.world.config.guard else math.inf
-        t_cap = _RUNAWAY_TORQUE if self.world.config.guard else math.inf
-        within = (
-            (np.abs(out["fx"]) <= cap)
-            & (np.abs(out["fy"]) <= cap)
-            & (np.abs(out["torque"]) <= t_cap)
-            & np.isfinite(out["parts"]).all(axis=1)
-        )
-        ok &= within
+        # Within the runaway bounds: each part (the force is one of each pair), finite without
+        # the guard (the largest float bounds them then), and the torque unless its budget is.
+        cap = RUNAWAY_FORCE if self.world.config.guard else sys.float_info.max
+        ok &= (np.abs(out["parts"]) <= cap).all(axis=1)
+        if not bounded:
+            ok &= np.abs(out["torque"]) <= t_cap
         return out
 
     # -- readings built when read ----------------------------------------------------------------
@@ -918,10 +964,12 @@ class Crowd:
         )
         short_before = float(nxt["short_before"][i])
         last_short = None if short_before < 0.0 else short_before == 1.0
+        px, py = nxt["push"]
+        load = 0.0 + max(0.0, -(float(px[i]) * up[0] + float(py[i]) * up[1]))
         c.sensed = Sensed(
             state_body, up, t, dt, substeps, (float(gx[i]), float(gy[i])), perceived, hit,
-            None, 0.0, float(nxt["load"][i]), False, last_short, 0.0, 0.0, None, ZERO, None,
-            None, (float(nxt["lx"][i]), float(nxt["ly"][i])),
+            None, 0.0, load, False, last_short, 0.0, 0.0, None, ZERO, None, None,
+            (float(nxt["lx"][i]), float(nxt["ly"][i])),
         )  # fmt: skip
         code = int(nxt["code"][i])
         new_state = _STATES[code]
@@ -941,11 +989,12 @@ class Crowd:
         hover = (float(nxt["hover_x"][i]), float(nxt["hover_y"][i])) if grounded else ZERO
         own = _own(nxt, i)
         drive = (float(nxt["drive_x"][i]), float(nxt["drive_y"][i])) if nxt["drive_on"][i] else ZERO
-        locked = bool(nxt["locked"][i])
+        short = float(nxt["short"][i])
+        locked = short < 0.0  # no balance acts
         torque = None if locked else float(nxt["balance"][i])
         c.last_forces = ControllerForces(
             hover, drive, ZERO, ZERO, 0.0 if torque is None else torque, own, torque, None, [],
-            None, None, None, None if locked else bool(nxt["short"][i] == 1.0),
+            None, None, None, None if locked else short == 1.0,
         )  # fmt: skip
         changed = new_state is not old_state
         c.transition = Transition(t, old_state, new_state) if changed else None
@@ -983,11 +1032,14 @@ def _step_efforts(view: dict[str, Any]) -> tuple[NDArray[np.float64], NDArray[np
 
 
 def _own(nxt: dict[str, Any], i: int) -> list[tuple[float, float, Category]]:
+    """Member ``i``'s forces in the step of ``nxt``, in order: the hover where it pushes, the
+    drive (or, airborne, the air steering) where it is not 0."""
     own: list[tuple[float, float, Category]] = []
-    if nxt["hover_on"][i]:
+    grounded = bool(nxt["on_ground"][i])
+    if grounded and nxt["hover"][i] > 0.0:
         own.append((float(nxt["hover_x"][i]), float(nxt["hover_y"][i]), SUPPORT))
     if nxt["drive_on"][i]:
-        kind = APPLIED if nxt["steer_on"][i] else SUPPORT
+        kind = SUPPORT if grounded else APPLIED
         own.append((float(nxt["drive_x"][i]), float(nxt["drive_y"][i]), kind))
     return own
 

@@ -104,7 +104,7 @@ def hover(
     # with the whole riser in view: stairs.py; there the rise is not held back.)
     ux, uy = sensed.up
     level = (nx * ux + ny * uy >= _COS_RISE_SLOPE) * _UNLIMITED
-    rise = ops.max(8.0 * weight / (m * omega * omega), level)
+    rise = ops.max(8.0 * weight / k, level)
     spring = hover_spring(k, c, m, ops.min(rise, target - h), v_n, sensed.dt, sensed.substeps)
     force = ops.min(config.hover_budget(m), ops.max(0.0, weight + spring))
     # Weightless (a nullified body) and not pressed on this ground by its frame either: nothing
