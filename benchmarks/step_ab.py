@@ -7,7 +7,10 @@ ratio B/A of the two processes of a round (robust to load drifting during the ru
 
     python benchmarks/step_ab.py --a ../main --b . --rounds 7
 
-Only the library of each tree is imported (``PYTHONPATH``), so both run the same script.
+Only the library and the levels of each tree are used: ``PYTHONPATH``, ``PLAYGROUND_LEVELS``
+and the tree as the child's working directory (``python -c`` puts the working directory first on
+``sys.path``: a child started in another checkout would import that one), so both run the same
+script.
 """
 
 from __future__ import annotations
@@ -39,6 +42,12 @@ print(json.dumps(statistics.median(times)))
 """
 
 
+def _env(tree: Path) -> dict[str, str]:
+    """The environment of a child of ``tree``: its library first on the path and its own levels
+    first (``$PLAYGROUND_LEVELS``; else an editable install's levels would be found)."""
+    return {**os.environ, "PYTHONPATH": str(tree), "PLAYGROUND_LEVELS": str(tree / "levels")}
+
+
 def levels(tree: Path) -> list[str]:
     """The shipped levels of ``tree`` (``playground list``)."""
     out = subprocess.run(
@@ -46,7 +55,8 @@ def levels(tree: Path) -> list[str]:
         check=True,
         capture_output=True,
         text=True,
-        env={**os.environ, "PYTHONPATH": str(tree)},
+        env=_env(tree),
+        cwd=tree,
     ).stdout
     return [line.split()[0] for line in out.splitlines() if line.strip()]
 
@@ -58,7 +68,8 @@ def time_level(tree: Path, level: str, warmup: int, blocks: int, steps: int) -> 
         check=True,
         capture_output=True,
         text=True,
-        env={**os.environ, "PYTHONPATH": str(tree)},
+        env=_env(tree),
+        cwd=tree,
     ).stdout
     return float(json.loads(out))
 
