@@ -7,7 +7,7 @@ running its own step, timed in interleaved blocks in one process (issue 27).
 
 The ratio (batch step / scalar step, the median of adjacent blocks' ratios, with the lowest and
 highest) passes below 1 where the batch path is the cheaper: ``CROWD_MIN_ACTORS``
-(playground/controller/crowd.py) is set from it.
+(playground/controller/crowd/members.py) is set from it.
 """
 
 from __future__ import annotations

@@ -5,7 +5,7 @@ reading and Newton's third law — each a function of what was sensed, held toge
 Each law returns its force and writes nothing; :func:`~playground.controller.action.act`
 calls them and applies the budgets' verdicts. Hover, drive, steer and balance are written over
 ``ops`` (:mod:`~playground.controller.elementwise`): in floats for one controller (the default),
-in numpy arrays for a crowd (:mod:`~playground.controller.crowd`), the same expressions. A
+in numpy arrays for a crowd (:mod:`~playground.controller.crowd.acting`), the same expressions. A
 different law (a fault of the catalogue, an experiment) is a :class:`Laws` with that one
 function replaced. The model they follow is in
 :class:`~playground.controller.controller.Controller`'s docstring.

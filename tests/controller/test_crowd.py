@@ -18,12 +18,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from playground import faults
-from playground.controller import crowd as crowd_module
 from playground.controller import stairs
 from playground.controller._vec import ZERO
 from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
 from playground.controller.crowd import Crowd
+from playground.controller.crowd import crowd as crowd_module
+from playground.controller.crowd.groups import ConfigArrays
 from playground.controller.sensing import effort, effort_on, lean
 from playground.controller.states import State
 from playground.gravity import GravityRule
@@ -297,18 +298,20 @@ def test_fresh_intents_every_step_do_not_pile_up_in_the_crowd() -> None:
 
 def test_the_crowds_tread_ahead_misses_no_step_up(monkeypatch: pytest.MonkeyPatch) -> None:
     """Law: where ``stairs.step_up`` finds a tread ahead for a walking member, the crowd's test
-    on arrays (``Crowd._may_step_up``) sends that member to its own step; on the stairs it does
-    so at every step up, and on a flat floor for no one."""
+    on arrays (``crowd.step_up.may_step_up``) sends that member to its own step; on the stairs
+    it does so at every step up, and on a flat floor for no one."""
     seen = {"walking": 0, "steps": 0, "flagged": 0}
-    test = Crowd._may_step_up
+    test = crowd_module.may_step_up
+    crowds: list[Crowd] = []  # the crowd of the world being stepped, last
 
-    def checked(self: Crowd, walking: Any, px: Any, py: Any, rvx: Any, rvy: Any, ux: Any,
-                uy: Any, move: Any, ground: Any) -> Any:  # fmt: skip
-        may = test(self, walking, px, py, rvx, rvy, ux, uy, move, ground)
+    def checked(sweeps: Any, per_config: ConfigArrays, walking: Any, px: Any, py: Any, rvx: Any,
+                rvy: Any, ux: Any, uy: Any, move: Any, ground: Any) -> Any:  # fmt: skip
+        may = test(sweeps, per_config, walking, px, py, rvx, rvy, ux, uy, move, ground)
+        configs = crowds[-1]._configs
         for i in np.flatnonzero(walking).tolist():
             found: Any = (None, ground[0][i], ground[1][i], ground[2][i], ground[3][i])
-            step = stairs.step_up(self._sweeps[i], found, px[i], py[i], rvx[i], rvy[i], ux[i],
-                                  uy[i], move[i], self._configs[i])  # fmt: skip
+            step = stairs.step_up(sweeps[i], found, px[i], py[i], rvx[i], rvy[i], ux[i],
+                                  uy[i], move[i], configs[i])  # fmt: skip
             seen["walking"] += 1
             seen["flagged"] += bool(may[i])
             if step is not None:
@@ -316,8 +319,9 @@ def test_the_crowds_tread_ahead_misses_no_step_up(monkeypatch: pytest.MonkeyPatc
                 assert may[i]
         return may
 
-    monkeypatch.setattr(Crowd, "_may_step_up", checked)
+    monkeypatch.setattr(crowd_module, "may_step_up", checked)
     world, _ = _stairs_crowd(batch=True)
+    crowds.append(Crowd.of(world))
     for _ in range(480):
         world.step()
     assert seen["steps"] > 0 and seen["flagged"] >= seen["steps"]
@@ -326,6 +330,7 @@ def test_the_crowds_tread_ahead_misses_no_step_up(monkeypatch: pytest.MonkeyPatc
     floor.add_static_segment((-5.0, 0.0), (80.0, 0.0))
     for i in range(30):
         Controller(floor, f"e{i}", position=(2.0 * i, 0.95), source=Patrol(0.5, 2.0 + 0.01 * i))
+    crowds.append(Crowd.of(floor))
     for _ in range(120):
         floor.step()
     assert seen["walking"] > 1000 and seen["flagged"] == 0
