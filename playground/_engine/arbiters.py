@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 import pymunk
@@ -169,5 +170,11 @@ class ArbiterValues:
         """(jx, jy, nx, ny) of each arbiter of the last read, in turn: the impulse on body A
         (N·s) and the normal, from A to B. Unpacked from the walk's doubles by ``struct`` as
         they are iterated (no list, no Python loop); valid until the next read."""
+        return _impulse_rows(self.floats())
+
+    def floats(self) -> Any:
+        """The doubles of the last read, jx, jy, nx, ny of each arbiter in turn (as
+        :meth:`values` gives them): a buffer over the walk's own array, valid until the next
+        read (:mod:`playground._engine.impulses` hands it to C)."""
         f = self._walk.f
-        return _impulse_rows(_buffer(f.arr, _FLOAT_SIZE * f.num))
+        return _buffer(f.arr, _FLOAT_SIZE * f.num)

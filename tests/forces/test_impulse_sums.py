@@ -1,7 +1,9 @@
 """Laws of the arbiter sums read at once: on random piles, every tracked body's sums from one read
 of every arbiter, in numpy (:class:`ImpulseSums`, the batch implementation) and in plain floats
-(:class:`ContactSums` above its crossover, the scalar one), equal the sums of the walk over each
-body's arbiters (:class:`ContactSums` below it) bit for bit, substep after substep."""
+(:class:`ContactSums` above its crossover, the scalar one, through the compiled helper of
+:mod:`playground._engine.impulses` where it was built and through its Python fallback), equal the
+sums of the walk over each body's arbiters (:class:`ContactSums` below it) bit for bit, substep
+after substep."""
 
 from __future__ import annotations
 
@@ -15,6 +17,7 @@ import pymunk
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from playground._engine import impulses
 from playground._engine.arbiters import ArbiterRows
 from playground.forces.impulse_sums import ImpulseSums
 from playground.forces.scalar import contacts
@@ -85,6 +88,18 @@ def _one_read() -> AbstractContextManager[None]:
     return _crossover(1, 10**9)  # always one read
 
 
+@contextmanager
+def _by_python() -> Iterator[None]:
+    """The one read summed by the Python fallback of :mod:`playground._engine.impulses`, as where
+    its compiled helper was not built."""
+    saved = impulses._sums_c
+    impulses._sums_c = None
+    try:
+        yield
+    finally:
+        impulses._sums_c = saved
+
+
 def _bits(x: float) -> str:
     return float(x).hex()
 
@@ -103,12 +118,13 @@ def _compare(seed: int, bodies: int, spread: float, substeps: int, tracked_share
     rows = [Row(b) for b in tracked]
     scalar = ContactSums()
     one_read, one_rows = ContactSums(), [Row(b) for b in tracked]
+    fallback, fallback_rows = ContactSums(), [Row(b) for b in tracked]
     h = 1.0 / 120.0 / substeps
     stamp = heaped = 0
     for _ in range(STEPS):
         batch.begin()
-        for r in (*rows, *one_rows):
-            r.jx = r.jy = r.jnx = r.jny = 0.0
+        for r in (*rows, *one_rows, *fallback_rows):
+            r.j = (0.0, 0.0, 0.0, 0.0)
         for sub in range(substeps):
             space.step(h)
             stamp += 1
@@ -116,13 +132,16 @@ def _compare(seed: int, bodies: int, spread: float, substeps: int, tracked_share
                 scalar.accumulate(rows, space, stamp, rescaled=False)
             with _one_read():
                 one_read.accumulate(one_rows, space, stamp, rescaled=False, fresh=sub == 0)
+                with _by_python():
+                    fallback.accumulate(fallback_rows, space, stamp, rescaled=False, fresh=sub == 0)
             arbiters.read(space)
             if len(arbiters.pairs):
                 batch.add(arbiters.pairs, arbiters.values)
-            for i, (r, q) in enumerate(zip(rows, one_rows, strict=True)):
-                want = [_bits(v) for v in (r.jx, r.jy, r.jnx, r.jny)]
+            for i, (r, q, p) in enumerate(zip(rows, one_rows, fallback_rows, strict=True)):
+                want = [_bits(v) for v in r.j]
                 assert [_bits(v) for v in batch.sums[i]] == want, (stamp, i)
-                assert [_bits(v) for v in (q.jx, q.jy, q.jnx, q.jny)] == want, (stamp, i)
+                assert [_bits(v) for v in q.j] == want, (stamp, i)
+                assert [_bits(v) for v in p.j] == want, (stamp, i)
             heaped += max(_arbiter_count(r.body) for r in rows) >= 3
     return heaped
 

@@ -264,12 +264,13 @@ class ScalarBodies:
                     r.cx = r.cy = r.cnx = r.cny = r.kx = r.ky = _NAN
                     r.split = False
                 else:
-                    cx = r.jx / dt
-                    cy = r.jy / dt
+                    jx, jy, jnx, jny = r.j
+                    cx = jx / dt
+                    cy = jy / dt
                     r.cx = cx
                     r.cy = cy
-                    r.cnx = r.jnx / dt
-                    r.cny = r.jny / dt
+                    r.cnx = jnx / dt
+                    r.cny = jny / dt
                     r.kx = ex - cx
                     r.ky = ey - cy
                     r.split = True

@@ -46,10 +46,7 @@ class Row:
         "h",
         "i_dt",
         "inv_m",
-        "jnx",
-        "jny",
-        "jx",
-        "jy",
+        "j",
         "kx",
         "ky",
         "locked",
@@ -104,9 +101,10 @@ class Row:
         self.sp = (0.0, 0.0)
         self.px = self.py = 0.0
         self.ax = self.ay = self.at = 0.0
-        # contact split: this step's impulse sums (N·s) and unknown flag; contact, its normal
-        # part and the constraint's (N), NaN until known
-        self.jx = self.jy = self.jnx = self.jny = 0.0
+        # contact split: this step's impulse sums (jx, jy, jnx, jny: Σ J and its normal parts,
+        # N·s) and unknown flag; contact, its normal part and the constraint's (N), NaN until
+        # known
+        self.j = (0.0, 0.0, 0.0, 0.0)
         self.unknown = False
         self.cx = self.cy = self.cnx = self.cny = self.kx = self.ky = _NAN
         self.split = False
