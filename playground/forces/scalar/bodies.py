@@ -4,12 +4,13 @@ plain floats, one body at a time, for few bodies.
 Every numpy call and every ``pymunk.batch`` call has a fixed price whatever the body count
 (docs/performance.md, rows numpy_call and batch_call), so below :data:`SCALAR_MAX_BODIES` tracked
 bodies the batch implementation (:class:`~playground.forces.batch.BatchBodies`) costs more than
-the physics. This one reads each
-tracked body's attributes, does the same arithmetic in the same order in Python floats and
-filters with the same 1€ (and median-of-3) equations, so both give the same readings (to a
-unit in the last place: magnitudes come from ``math.hypot`` here and from numpy's complex ``abs``
-there). The contact split sums each body's arbiters (:mod:`playground.forces.scalar.contacts`);
-a field that varies in space reaches the bodies as forces computed in plain floats, body by body.
+the physics. This one reads each tracked body's state (every row's velocities, and forces before
+the step, in one call: :class:`~playground._engine.motion.Motions`), does the same arithmetic in
+the same order in Python floats and filters with the same 1€ (and median-of-3) equations, so
+both give the same readings (to a unit in the last place: magnitudes come from ``math.hypot``
+here and from numpy's complex ``abs`` there). The contact split sums each body's arbiters
+(:mod:`playground.forces.scalar.contacts`); a field that varies in space reaches the bodies as
+forces computed in plain floats, body by body.
 
 The tracked set (:class:`~playground.forces.tracked.TrackedSet`) switches between the two at a
 plan change; the state moves with it (:meth:`ScalarBodies.load` and :meth:`ScalarBodies.store`,
@@ -28,6 +29,7 @@ import pymunk
 from numpy.typing import NDArray
 
 from playground._engine import raw
+from playground._engine.motion import Motions
 from playground.filters.one_euro import OneEuroFilter
 from playground.forces.ledger import ForceLedger
 from playground.forces.readings import BodyForces, TrackedReadings
@@ -99,6 +101,7 @@ class ScalarBodies:
         self._summed = 0
         self._held: list[tuple[pymunk.Body, pymunk.Vec2d, float]] = []
         self._contacts = ContactSums()
+        self._motions = Motions([])  # the rows' bodies, read in one call
         # Whether a row may hold contact split readings (rows loaded, or split this step): only
         # then does a step without the split look for them to clear.
         self._split_held = False
@@ -108,6 +111,7 @@ class ScalarBodies:
     def load(self, solver: ForceSolver, perceived: PerceivedGravity) -> None:
         """Take over the state of the batch implementation (at a plan change, not per step)."""
         self.rows, self._one_euro, self._median, history = handoff.load(solver, perceived)
+        self._motions = Motions([r.body for r in self.rows])
         self.threshold = perceived.config.up_threshold
         self._split_held = True
         self._contacts.history = history
@@ -137,16 +141,8 @@ class ScalarBodies:
             _add_forces(field, sleeping=self.check_sleep)
         self._field = field is not None
         self._summed = 0
-        get_velocity, angular_velocity = raw.get_velocity, raw.angular_velocity
-        get_force, torque = raw.get_force, raw.torque
-        for r in self.rows:
-            h = r.h
-            v = get_velocity(h)
-            r.v0x, r.v0y = v.x, v.y
-            r.v0w = angular_velocity(h)
-            f = get_force(h)
-            r.fx, r.fy = f.x, f.y
-            r.ft = torque(h)
+        for r, motion in zip(self.rows, self._motions.velocities_and_forces(), strict=True):
+            r.v0x, r.v0y, r.v0w, r.fx, r.fy, r.ft = motion
             r.seen = True
             if field is not None:
                 r.ffx, r.ffy = field.get(r.body, (0.0, 0.0))
@@ -165,21 +161,17 @@ class ScalarBodies:
         impulses (``stamp``, ``rescaled``: see :meth:`ForceSolver.after_substep`)."""
         check_sleep = self.check_sleep
         first_sum = self._summed == 0
-        get_velocity, angular_velocity = raw.get_velocity, raw.angular_velocity
         is_sleeping = raw.is_sleeping
-        for r in self.rows:
-            h = r.h
-            v = get_velocity(h)
-            r.vx, r.vy = v.x, v.y
-            r.vw = angular_velocity(h)
+        for r, (vx, vy, vw) in zip(self.rows, self._motions.velocities(), strict=True):
+            r.vx, r.vy, r.vw = vx, vy, vw
             if not last:
                 if first_sum:
-                    r.qx, r.qy, r.qw = r.vx, r.vy, r.vw
+                    r.qx, r.qy, r.qw = vx, vy, vw
                 else:
-                    r.qx += r.vx
-                    r.qy += r.vy
-                    r.qw += r.vw
-            if check_sleep and is_sleeping(h):
+                    r.qx += vx
+                    r.qy += vy
+                    r.qw += vw
+            if check_sleep and is_sleeping(r.h):
                 r.seen = False
         if not last:
             self._summed += 1
