@@ -40,7 +40,7 @@ USED: dict[str, tuple[str, ...]] = {
         "perceived_up",
         "step",
     ),
-    "Controller": ("axis", "state"),
+    "Controller": ("axis", "config", "state"),
     "ControllerConfig": (),
     "Intent": (),
     "State": (),

@@ -141,10 +141,9 @@ class Controller:
         stable_hover(config, world.config.dt)
         self.world = world
         self.name = name
-        self.config = config
-        """Its body, sensing and budgets (m, kg, s, N; see :class:`ControllerConfig`)."""
-        self.laws = laws
-        """The force laws it follows (replace one with ``dataclasses.replace``)."""
+        # Set before its crowd exists (config and laws tell the crowd when they change).
+        self._config = config
+        self._laws = laws
         self.source = source
         half = config.half_length
         moment = (
@@ -191,6 +190,34 @@ class Controller:
         self.crowd.join(self)
 
     # -- the readings of the last step (built from the crowd's arrays when it ran them) ----------
+
+    @property
+    def config(self) -> ControllerConfig:
+        """Its body, sensing and budgets (m, kg, s, N; see :class:`ControllerConfig`); set a new
+        one to change them from the next step on (its crowd reads it again then).
+
+        >>> from playground import World
+        >>> world = World()
+        >>> player = Controller(world, "player", position=(0.0, 0.95))
+        >>> player.config.height, player.config.radius                  # m
+        (1.8, 0.25)
+        """
+        return self._config
+
+    @config.setter
+    def config(self, value: ControllerConfig) -> None:
+        self._config = value
+        self.crowd.settings_changed()
+
+    @property
+    def laws(self) -> Laws:
+        """The force laws it follows (replace one with ``dataclasses.replace``)."""
+        return self._laws
+
+    @laws.setter
+    def laws(self, value: Laws) -> None:
+        self._laws = value
+        self.crowd.settings_changed()
 
     @property
     def sensed(self) -> Sensed:
@@ -412,7 +439,7 @@ class Controller:
         if self.stale is not None:
             self.stale.materialize(self)
         intent = self.intent
-        config = self.config
+        config = self._config
         before = self._control_state
         last = self._last_forces
         sensed = self.senses.sense(
@@ -421,7 +448,7 @@ class Controller:
         state = decide(sensed, before, intent, config)
         if before.grip is not None or state.grip is not None:
             hold(world, before.grip, state.grip, intent, config, sensed.dt)
-        forces = act(sensed, state, intent, config, self.laws)
+        forces = act(sensed, state, intent, config, self._laws)
         if intent.restore_gravity or intent.gravity is not None or intent.nullify is not None:
             switches.switch(world, self.name, intent, before.gravity_wish, before.nullify_wish)
         exert(world, self.body, forces)

@@ -6,7 +6,9 @@ docstring (:mod:`playground.controller.crowd`) says when a member runs its own s
 
 from __future__ import annotations
 
+import itertools
 import math
+import operator
 from typing import Any
 
 import numpy as np
@@ -35,6 +37,8 @@ from playground.world.world import World
 __all__ = ["Crowd"]
 
 _COS_CORNER_TILT = math.cos(stairs.CORNER_TILT)
+_STATE = ("ux", "uy", "short", "saturated", "grounded_at")
+"""The state arrays a step makes for its batch members (their push is 0 after it)."""
 
 # The values the laws read and the lean, called on arrays (typed for floats, written for both).
 _GroundHit: Any = GroundHit
@@ -109,30 +113,23 @@ class Crowd(Members):
         wc = world.config
         dt = wc.dt
         # -- who may go batch: intents, laws, states ---------------------------------------------
-        # One pass over the members: each one's intent as a plain move (NaN: it asks for more),
-        # computed again only when its intent changed (a patrol keeps its intent between turns;
-        # a keyboard makes new ones); which follow other laws (NaN too: they run scalar; a move
-        # is within [-1, 1]); whether a config changed (the groups are made again).
-        default_laws = members[0].default_laws
-        intents, moves, configs = self._intents, self._moves, self._configs
-        lawless: list[int] = []
-        regroup = False
-        for i, c in enumerate(members):
-            intent = c.intent
-            if intent is not intents[i]:
-                intents[i] = intent
-                moves[i] = _plain_move(intent)
-            if c.laws is not default_laws:
-                lawless.append(i)
-            if c.config is not configs[i]:
-                regroup = True
-        move = moves.copy()
+        # Each member's intent as a plain move (NaN: it asks for more), computed again only
+        # for the intents that changed (a patrol keeps its intent between turns; a keyboard
+        # makes new ones), found in one pass in C. Which members follow other laws (they run
+        # scalar) and the config groups are read again only when a member's laws or config
+        # changed (Controller.config and .laws tell the crowd).
+        if self._settings_changed or members[0].default_laws is not self._default_laws:
+            self._read_settings()
+        intents = [c.intent for c in members]
+        moves = self._moves
+        for i in itertools.compress(range(n), map(operator.is_not, intents, self._intents)):
+            moves[i] = _plain_move(intents[i])
+        self._intents = intents
+        lawless = self._lawless
+        ok = (self._code > 0) & (moves == moves)  # NaN is not equal to itself
         if lawless:
-            move[lawless] = math.nan
-        ok = (self._code > 0) & ~np.isnan(move)
-        move[~ok] = 0.0
-        if regroup:
-            self._regroup()
+            ok[lawless] = False
+        move = np.where(ok, moves, 0.0)
         cur = self.cur
         for g in self._groups:
             cfg = g.config
@@ -322,9 +319,12 @@ class Crowd(Members):
                     self._absorb(j)
                 break
         # -- commit the batch members' state ----------------------------------------------------
+        if ok.all():
+            self._commit_all(nxt)
+            return
         # New arrays, not written over: the views of this step read the ones before it (the
         # state, the balance's shortfall and the push before the step).
-        for k in ("ux", "uy", "short", "saturated", "grounded_at"):
+        for k in _STATE:
             cur[k] = np.where(ok, nxt[k], cur[k])
         cur["push_x"] = np.where(ok, 0.0, cur["push_x"])
         cur["push_y"] = np.where(ok, 0.0, cur["push_y"])
@@ -341,6 +341,30 @@ class Crowd(Members):
         view[()] = nxt
         self._views[ok] = view
         self._last_ground[ok & nxt["on_ground"]] = view  # this step's hit, built when read
+        self._whole_step = False
+
+    def _commit_all(self, nxt: dict[str, Any]) -> None:
+        """The commit of a step every member ran batch (the usual step): this step's arrays
+        become the state as they are (the views of this step read the ones before it; a
+        member's own step later writes only its own element), and every member's view is
+        this step's."""
+        cur = self.cur
+        for k in _STATE:
+            cur[k] = nxt[k]
+        n = len(self.members)
+        cur["push_x"], cur["push_y"] = np.zeros(n), np.zeros(n)
+        self._code = nxt["code"]
+        unread = self._unread
+        for i in np.flatnonzero(~unread).tolist():
+            self.members[i].stale = self
+        unread.fill(True)
+        self._steps_run += 1
+        self._view_id.fill(self._steps_run)
+        view = np.empty((), dtype=object)  # one object for a masked write (no sequence)
+        view[()] = nxt
+        self._views.fill(nxt)
+        self._last_ground[nxt["on_ground"]] = view  # this step's hit, built when read
+        self._whole_step = True
 
     def _row_bodies(self, rows: NDArray[np.intp]) -> RowBodies:
         """The bodies of the members ``rows``: the last step's again while they are the same."""
@@ -351,6 +375,17 @@ class Crowd(Members):
                 [self.members[i].body for i in rows.tolist()], self._ids[rows]
             )
         return self._rows_of
+
+    def _read_settings(self) -> None:
+        """Which members follow other laws than the crowd runs on arrays (they run their own
+        step), and the config groups made again if a config changed."""
+        members = self.members
+        default_laws = members[0].default_laws
+        self._default_laws = default_laws
+        self._lawless = [i for i, c in enumerate(members) if c.laws is not default_laws]
+        if not all(map(operator.is_, [c.config for c in members], self._configs)):
+            self._regroup()
+        self._settings_changed = False
 
     def _regroup(self) -> None:
         """The config groups and the arrays of the configs, made again (a config changed)."""
@@ -378,6 +413,10 @@ class Crowd(Members):
         ``own``, else 0, N: read from the efforts of each one's last batch step
         (:func:`~playground.controller.crowd.readings.step_efforts`) without building its
         readings, or from its own scalar step's (then it is no longer ``stale``)."""
+        if self._whole_step:
+            # Every member's last step was the last batch step, and none was read since.
+            step_x, step_y = step_efforts(self._views[0])
+            return np.where(own, step_x[rows], 0.0), np.where(own, step_y[rows], 0.0)
         k = len(rows)
         ex, ey = np.zeros(k), np.zeros(k)
         fresh = own & self._unread[rows]

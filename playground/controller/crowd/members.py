@@ -7,6 +7,7 @@ read (:meth:`Members.materialize`). The step that runs them is
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -72,6 +73,10 @@ class Members(ABC):
         self._resize()
         self._replan()
         return owned
+
+    def settings_changed(self) -> None:
+        """A member's config or laws changed: the next step reads them again."""
+        self._settings_changed = True
 
     def set_min_actors(self, most: int) -> None:
         """Set :attr:`min_actors` and apply it now."""
@@ -141,15 +146,22 @@ class Members(ABC):
         # which batch step's (a count of steps; -1: none): their efforts come from the arrays.
         self._unread = np.zeros(n, dtype=bool)
         self._view_id = np.full(n, -1, dtype=np.int64)
+        self._whole_step = False
+        """Whether every member ran the last batch step and none was read since."""
         self._steps_run = getattr(self, "_steps_run", 0)
         self._rows_version = -1
         self._rows_key = b""
         self._rows_of = RowBodies([], self._ids[:0])
         # Each member's intent when its move was computed (None: not yet), and the configs the
         # groups were made of (a config no member holds: made on the first step).
-        self._intents: list[Intent | None] = [None] * n
+        self._intents: Sequence[Intent | None] = [None] * n
         self._moves = np.zeros(n)
         self._configs = [_NO_CONFIG] * n
+        # Which members follow other laws than the defaults, read with the configs when one
+        # changes (Controller.config and .laws tell the crowd) or the members do.
+        self._lawless: list[int] = []
+        self._default_laws: Any = None
+        self._settings_changed = True
         self._absorb_all()
 
     def _absorb_all(self) -> None:
@@ -187,6 +199,7 @@ class Members(ABC):
         self._views[i] = None
         self._unread[i] = False
         self._view_id[i] = -1
+        self._whole_step = False
 
     # -- readings built when read ----------------------------------------------------------------
 
@@ -197,4 +210,5 @@ class Members(ABC):
         nxt = self._views[i]
         c.stale = None
         self._unread[i] = False
+        self._whole_step = False
         build_readings(c, i, nxt, self._last_ground)
