@@ -203,10 +203,20 @@ class Crowd(Members):
             self._grounds = Grounds(readings)
         grounds = self._grounds
         shape_of = found.shape
-        solid, still, corners = grounds.kinds[shape_of].T
         # Grounded and finding nothing, its own step looks for a tread to step down to
-        # (stairs.below); over a ground that moves, its own step.
-        lost = ((shape_of == NO_HIT) & grounded_before[of]) | (solid & ~still)
+        # (stairs.below); over a ground that moves, its own step. Where every probe found the
+        # one same shape (the usual step: one floor), its kind is one value for all.
+        one = len(found.shapes) == 1 and bool((shape_of == 0).all())
+        solid: Any
+        still: Any
+        corners: Any
+        lost: Any
+        if one:
+            solid, still, corners = grounds.kinds[0].tolist()
+            lost = solid and not still
+        else:
+            solid, still, corners = grounds.kinds[shape_of].T
+            lost = ((shape_of == NO_HIT) & grounded_before[of]) | (solid & ~still)
         # On stairs its own step's probe reads another ground: a corner's face, a tread to step
         # down to (grounded over unwalkable ground), a tread ahead to step up onto (for the
         # walking ones, below: may_step_up). stairs.face and stairs.walkable's own tests first,
@@ -214,11 +224,12 @@ class Crowd(Members):
         along = found.nx * ux[of] + found.ny * uy[of]
         off = grounded_before[of] & ~(along >= self._per_config.cos_slope[of])
         on = solid & still
-        for q in (on & ~off & (along < _COS_CORNER_TILT) & corners).nonzero()[0].tolist():
-            i = int(probing[q])
-            probed = (found.shapes[shape_of[q]], *found.point_normal[:, q].tolist())
-            pose = (float(x[i]), float(y[i]), float(ux[i]), float(uy[i]))
-            off[q] = stairs.face(probed, *pose, self._configs[i].probe_radius) is not probed
+        if not one or (on and corners):
+            for q in (on & ~off & (along < _COS_CORNER_TILT) & corners).nonzero()[0].tolist():
+                i = int(probing[q])
+                probed = (found.shapes[shape_of[q]], *found.point_normal[:, q].tolist())
+                pose = (float(x[i]), float(y[i]), float(ux[i]), float(uy[i]))
+                off[q] = stairs.face(probed, *pose, self._configs[i].probe_radius) is not probed
         ok[probing[lost | (on & off)]] = False
         # The members on a ground kept, as rows of the probes' answers (kept) and of the arrays
         # (at): every row where every member is (the usual step), copied without a gather.
@@ -227,13 +238,13 @@ class Crowd(Members):
         if len(at) == n:
             kept = at = slice(None)
         on_ground = np.empty(n, dtype=object)
-        on_ground[at] = grounds.bodies[shape_of[kept]]
+        on_ground[at] = grounds.bodies[0] if one else grounds.bodies[shape_of[kept]]
         ground: list[pymunk.Body | None] = on_ground.tolist()
         hit = np.zeros(n, dtype=bool)
         hit[at] = True
         cols = np.zeros((7, n))
         cols[:4, at] = found.point_normal[:, kept]
-        cols[4:, at] = grounds.motion[shape_of[kept]].T
+        cols[4:, at] = grounds.motion[0][:, None] if one else grounds.motion[shape_of[kept]].T
         hx, hy, nx, ny, gvx, gvy, gw = cols
         walking = ok & hit & (move != 0.0)
         if walking.any():
@@ -274,6 +285,7 @@ class Crowd(Members):
         ledger = world.ledger
         rows = np.flatnonzero(ok)
         rows.flags.writeable = False
+        every = len(rows) == n  # every member runs batch (the usual step)
         block: ForceRows | None = None
         if len(rows):
             block = ForceRows(
@@ -289,7 +301,7 @@ class Crowd(Members):
         # or scalar member) comes first, its own forces after it.
         version = world.gravity_version
         ok_list = ok.tolist()
-        scalar = np.flatnonzero(~ok).tolist()
+        scalar = [] if every else np.flatnonzero(~ok).tolist()
         member_of = self._member_of
         start = 0
         for stop in [*scalar, n]:
@@ -299,7 +311,7 @@ class Crowd(Members):
                     if j is not None and start <= j < stop and ok_list[j]:
                         ledger.drop_row(b)
                         ledger.add_all(b, own_forces(nxt, j), own_torque(nxt, j, members[j].config))
-                lo, hi = np.searchsorted(rows, (start, stop))
+                lo, hi = (0, n) if every else np.searchsorted(rows, (start, stop))
                 block.active[lo:hi] = True
             if stop == n:
                 break
@@ -319,7 +331,7 @@ class Crowd(Members):
                     self._absorb(j)
                 break
         # -- commit the batch members' state ----------------------------------------------------
-        if ok.all():
+        if every:  # (the walk turns members scalar only after a scalar member's switch)
             self._commit_all(nxt)
             return
         # New arrays, not written over: the views of this step read the ones before it (the
