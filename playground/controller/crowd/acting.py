@@ -34,7 +34,7 @@ _Sensed: Any = Sensed
 def act(
     groups: list[Group],
     cur: dict[str, Any],
-    code: NDArray[np.int8],
+    grounded_before: NDArray[np.bool_],
     guard: bool,
     sensed: Sensed,
     hits: GroundHit,
@@ -50,8 +50,8 @@ def act(
     slides, or is about to) or that loses its ground (the state holds GROUNDED for
     ``footing_time``): the scalar step decides those. Slopes are measured against
     ``level`` (the field's up, or up). ``groups`` are the crowd's config groups, ``cur`` its
-    arrays of the members' state, ``code`` their state codes
-    (:mod:`~playground.controller.crowd.codes`) and ``guard`` the world's runaway guard.
+    arrays of the members' state, ``grounded_before`` which were GROUNDED before the step
+    and ``guard`` the world's runaway guard.
 
     The readings read only when a member's are built
     (:func:`~playground.controller.crowd.readings.build_readings`: whether each force acts, the
@@ -60,7 +60,6 @@ def act(
     nx, ny = hits.normal
     ux, uy = sensed.up
     lx, ly = level
-    grounded_before = code == 1
     out: dict[str, Any] = {"ux": ux, "uy": uy, "lx": lx, "ly": ly}
     out["push"] = (cur["push_x"], cur["push_y"])  # for the load (the commit makes new ones)
     # One config for every member (the usual crowd) takes each group's arrays as they are;

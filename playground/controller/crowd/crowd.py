@@ -273,8 +273,8 @@ class Crowd(Members):
         )
         sensed = _Sensed(body, (ux, uy), t, dt, wc.substeps, (gx, gy))
         guard = self.world.config.guard
-        nxt = act(self._groups, cur, self._code, guard, sensed, hits, hit, move, ok, t, dt,
-                  (lx, ly))  # fmt: skip
+        nxt = act(self._groups, cur, grounded_before, guard, sensed, hits, hit, move, ok, t,
+                  dt, (lx, ly))  # fmt: skip
         nxt["code_before"] = self._code  # the commit below makes new ones
         nxt["short_before"] = cur["short"]
         nxt["ground"] = ground

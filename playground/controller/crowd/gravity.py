@@ -63,6 +63,8 @@ def below(pg: NDArray[np.float64], threshold: float) -> NDArray[np.bool_]:
     decides all but the rows within 1e-12 of the threshold, which ``math.hypot`` does."""
     s = pg[:, 0] * pg[:, 0] + pg[:, 1] * pg[:, 1]
     lo, hi = (threshold * (1.0 - 1e-12)) ** 2, (threshold * (1.0 + 1e-12)) ** 2
+    if len(s) and s.min() > hi:  # every row clear above it (the usual step); NaN is not
+        return np.zeros(len(s), dtype=bool)
     below = s < lo
     for i in ((s >= lo) & (s <= hi)).nonzero()[0].tolist():  # near it (NaN is not)
         below[i] = math.hypot(pg[i, 0], pg[i, 1]) < threshold
