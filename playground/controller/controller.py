@@ -180,6 +180,10 @@ class Controller:
         (None: the readings are up to date)."""
 
         self.removed = False
+        self.reads_source = source is not None
+        """Whether its INPUTS hook (:meth:`read_source`) reads its source each step (a crowd
+        may read it in its place: :meth:`Crowd.read_sources
+        <playground.controller.crowd.members.Members.read_sources>`)."""
         self._hooks: list[tuple[Stage, Callable[[World], None]]] = [(Stage.CONTROL, self.step)]
         if source is not None:
             self._hooks.insert(0, (Stage.INPUTS, self.read_source))
@@ -288,12 +292,13 @@ class Controller:
         state = self.control_state
         hold(self.world, state.grip, None, self.intent, self.config, self.world.config.dt)
         self.control_state = dataclasses.replace(state, grip=None)
-        # An active crowd runs its members' CONTROL step: theirs is not registered.
+        # An active crowd runs its members' CONTROL step, and may read their sources: their
+        # own hooks of those stages are not registered.
         owned = self.crowd.leave(self)
         self.world.remove(self.name)
         self.senses.detach(self.world)
         for stage, hook in self._hooks:
-            if not (owned and stage is Stage.CONTROL):
+            if stage not in owned:
                 self.world.off(stage, hook)
         self.removed = True
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import heapq
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from enum import Enum
 from typing import TYPE_CHECKING
@@ -131,6 +131,33 @@ class Schedule:
         kept.remove(hook)
         setattr(self, _HOOK_LISTS[stage], kept)
         self._replan()
+
+    def replace(self, stage: Stage, old: Sequence[Hook], new: Sequence[Hook]) -> bool:
+        """Put ``new`` in the place of ``old``, hooks of ``stage`` that run one right after
+        another in that order (whoever swaps them makes ``new`` run what ``old`` ran); False,
+        and nothing changes, if they do not. The stage that is running finishes with the hooks
+        it started with.
+
+        >>> schedule = Schedule(replan=lambda: None)
+        >>> def a(world: object) -> None: ...
+        >>> def b(world: object) -> None: ...
+        >>> def ab(world: object) -> None: ...
+        >>> for hook in (a, b):
+        ...     schedule.on(Stage.INPUTS, hook)
+        >>> schedule.replace(Stage.INPUTS, [b, a], [ab])
+        False
+        >>> schedule.replace(Stage.INPUTS, [a, b], [ab]), schedule.inputs == [ab]
+        (True, True)
+        """
+        hooks = self._hooks(stage)
+        if not old or old[0] not in hooks:
+            return False
+        at = hooks.index(old[0])
+        if hooks[at : at + len(old)] != list(old):
+            return False
+        setattr(self, _HOOK_LISTS[stage], [*hooks[:at], *new, *hooks[at + len(old) :]])
+        self._replan()
+        return True
 
     def _hooks(self, stage: Stage) -> list[Hook]:
         hooks: list[Hook] = getattr(self, _HOOK_LISTS[stage])

@@ -714,6 +714,13 @@ class World:
         step: the stage that is running finishes with the hooks it started with."""
         self._schedule.off(stage, hook)
 
+    def replace_hooks(self, stage: Stage, old: Sequence[Hook], new: Sequence[Hook]) -> bool:
+        """Put the hooks ``new`` in the place of ``old``, hooks of ``stage`` that run one right
+        after another in that order; False, and nothing changes, if they do not
+        (:meth:`Schedule.replace <playground.world.schedule.Schedule.replace>`). Safe from inside
+        a step, as :meth:`off` is."""
+        return self._schedule.replace(stage, old, new)
+
     def at(self, t: float, event: Hook) -> None:
         """Run ``event(world)`` once, in the EVENTS stage of the first step starting at or after
         ``t`` (s). Events at the same time run in the order they were scheduled."""

@@ -22,7 +22,7 @@ from playground.controller import stairs
 from playground.controller._vec import ZERO
 from playground.controller.config import ControllerConfig
 from playground.controller.controller import Controller
-from playground.controller.crowd import Crowd
+from playground.controller.crowd import CROWD_MIN_ACTORS, Crowd
 from playground.controller.crowd import crowd as crowd_module
 from playground.controller.crowd.groups import ConfigArrays
 from playground.controller.sensing import effort, effort_on, lean
@@ -31,6 +31,7 @@ from playground.gravity import GravityRule
 from playground.intents import Intent, Patrol, Script
 from playground.level import find, load
 from playground.scene import build
+from playground.world.schedule import Stage
 from playground.world.world import World
 
 STEPS = 150
@@ -476,3 +477,47 @@ def test_a_member_joining_a_crowd_run_one_by_one_starts_it_as_it_is() -> None:
             batched += sum(c.stale is not None for c in sb)
         assert _readings(batch, sb) == _readings(scalar, sa), f"step {step}"
     assert batched >= BATCHED_AGAIN * 120 * len(sb)
+
+
+class _Logged:
+    """A source that logs its name each time it is read, then walks."""
+
+    def __init__(self, name: str, log: list[str]) -> None:
+        self.name, self.log = name, log
+
+    def intent(self, t: float) -> Intent:
+        self.log.append(self.name)
+        return Intent(move=0.5)
+
+
+def _logged_steps(min_actors: int, between: int | None) -> tuple[list[str], int]:
+    """The log of reads and INPUTS hooks of a crowd of 16 logged members (another hook
+    registered before member ``between``, and one after them all) over steps in which one
+    joins and one leaves; and how many members the crowd read in its own hook."""
+    log: list[str] = []
+    world = World()
+    world.add_static_segment((-5.0, 0.0), (60.0, 0.0))
+    Crowd.of(world).set_min_actors(min_actors)
+    actors = []
+    for i in range(16):
+        if i == between:
+            world.on(Stage.INPUTS, lambda w: log.append("between"))
+        actors.append(Controller(world, f"e{i}", (2.0 * i, 0.95), source=_Logged(f"e{i}", log)))
+    world.on(Stage.INPUTS, lambda w: log.append("after"))
+    world.run(0.05)
+    read_by_crowd = len(Crowd.of(world)._readers)
+    Controller(world, "late", (40.0, 0.95), source=_Logged("late", log))
+    actors.pop(3).remove()
+    world.run(0.05)
+    return log, read_by_crowd
+
+
+@pytest.mark.parametrize("between", [None, 5])
+def test_a_crowd_reads_its_members_sources_in_their_hooks_order(between: int | None) -> None:
+    """Law: an active crowd reads its members' sources in one INPUTS hook only where their own
+    hooks ran one right after another (a hook between them: each reads its own), so every
+    source and hook is read in the order it was without the crowd."""
+    alone, none_read = _logged_steps(NEVER, between)
+    crowd, read = _logged_steps(CROWD_MIN_ACTORS, between)
+    assert crowd == alone
+    assert none_read == 0 and read == (16 if between is None else 0)

@@ -48,6 +48,9 @@ class Members(ABC):
         leaves, or at once through :meth:`set_min_actors`)."""
         self.active = False
         """Whether the crowd's hook runs the members (else each runs its own)."""
+        self._readers: list[Controller] = []
+        """The members whose sources :meth:`read_sources` reads in place of their own INPUTS
+        hooks (none: each reads its own)."""
         self._resize()
 
     @abstractmethod
@@ -57,22 +60,55 @@ class Members(ABC):
     # -- membership ------------------------------------------------------------------------------
 
     def join(self, controller: Controller) -> None:
-        """Add a controller (it has registered its own CONTROL hook)."""
+        """Add a controller (it has registered its own hooks, or will at the step's end)."""
         self.members.append(controller)
         self._resize()
+        world = self.world
         if self.active:
-            self.world.off(Stage.CONTROL, controller.step)
+            world.off(Stage.CONTROL, controller.step)
+            # Its source read with the others' if its hook runs right after theirs.
+            readers = self._readers
+            if (
+                readers
+                and controller.reads_source
+                and world.replace_hooks(
+                    Stage.INPUTS, [self.read_sources, controller.read_source], [self.read_sources]
+                )
+            ):
+                self._readers = [*readers, controller]
         self._replan()
 
-    def leave(self, controller: Controller) -> bool:
-        """Take a controller out (it is being removed); whether the crowd was running its
-        CONTROL step (then its own hook is not registered)."""
-        owned = self.active
+    def leave(self, controller: Controller) -> set[Stage]:
+        """Take a controller out (it is being removed); the stages whose hook of its own is
+        not registered (the crowd ran its CONTROL step, or read its source)."""
+        owned = {Stage.CONTROL} if self.active else set()
+        if any(c is controller for c in self._readers):
+            owned.add(Stage.INPUTS)
+            # A new list: a stage reading the old one goes on (the controller is removed).
+            self._readers = [c for c in self._readers if c is not controller]
+            if not self._readers:
+                self.world.off(Stage.INPUTS, self.read_sources)
         self._fresh()
         self.members.remove(controller)
         self._resize()
         self._replan()
         return owned
+
+    def read_sources(self, world: World) -> None:
+        """The INPUTS stage's hook in place of the readers' own (:meth:`Controller.read_source
+        <playground.controller.controller.Controller.read_source>`, which ran one right after
+        another where this runs): each one's intent from its source, in their order, with the
+        same checks, without a hook's call for each."""
+        for c in self._readers:
+            source = c.source
+            assert source is not None
+            if c.removed:
+                continue
+            intent = source.intent(world.time)
+            if not isinstance(intent, Intent):
+                # A duck-typed intent skips Intent's checks: a NaN move would win the budget.
+                raise ValueError(f"{c.name}: the intent source returned {intent!r}, not an Intent")
+            c.intent = intent
 
     def settings_changed(self) -> None:
         """A member's config or laws changed: the next step reads them again."""
@@ -95,12 +131,22 @@ class Members(ABC):
             for c in self.members:
                 world.off(Stage.CONTROL, c.step)
             world.on(Stage.CONTROL, self.step)
+            # Their sources read in one hook where their own hooks run one right after another
+            # (in member order), else each reads its own.
+            readers = [c for c in self.members if c.reads_source]
+            hooks = [c.read_source for c in readers]
+            if readers and world.replace_hooks(Stage.INPUTS, hooks, [self.read_sources]):
+                self._readers = readers
         else:
             world.off(Stage.CONTROL, self.step)
             for c in self.members:
                 if c.stale is self:
                     self.materialize(c)
                 world.on(Stage.CONTROL, c.step)
+            if self._readers:
+                hooks = [c.read_source for c in self._readers]
+                world.replace_hooks(Stage.INPUTS, [self.read_sources], hooks)
+                self._readers = []
         self.active = want
 
     def _fresh(self) -> None:
