@@ -148,7 +148,9 @@ GOALS = (
         "×",
         "The split's batch read of every arbiter and its numpy sums come on top of the solver "
         "and filter rows above; a change of the arbiters' ids remakes the plan of which row "
-        "each arbiter's impulse goes to.",
+        "each arbiter's impulse goes to. The ratio is near the goal and moves from run to run: "
+        "0.39×, 0.41×, 0.45× and 0.59× in four runs on a quiet machine "
+        "(`benchmarks/split_pile.py --sizes 1000 --repeats 21`).",
     ),
     Goal(
         "field_1000",
@@ -171,17 +173,17 @@ GOALS = (
         4.0,
         True,
         "µs",
-        "A fixed cost a step whatever the crowd's size, about 0.39 ms (658 and 923 µs at 100 "
-        "and 200 actors, the run below): the numpy calls of the state machine, the lean, the "
-        "laws and the step-up tests, each over all actors, and the stages around them; then "
-        "about 2.6 µs an actor: two Chipmunk queries (the probe under it, a swept circle, and, "
-        "walking, a ray for a tread ahead to step up onto), each kind cast for all actors in "
-        "one call of the compiled helper (`_engine/_nearest.c`), about 0.25 µs a query, nearly "
-        "all Chipmunk's walk of its BB tree (without a compiler, the Python callback: about "
-        "1.5 µs a query); each actor's hook reading its intent; the solver's and filter's rows. "
-        "So the cost per actor falls with the crowd's size; at 100 actors 4 µs needs the fixed "
-        "part cut by more than half (fewer, fused passes over the actors). Timed in the "
-        "crowd's steady state, its patrols turning (`playground/bench/crowd.py`, SETTLE).",
+        "Numpy calls over the actors, each about as dear at 100 rows as at 10, so the cost per "
+        "actor falls with the crowd's size (the 200 row meets it). At 100 actors a step is "
+        "about 3.7 M instructions (`benchmarks/step_instructions.py --actors 100`); measured "
+        "per function before the last 8 % came off: the laws of `controller/crowd/acting.py` "
+        "(hover, drive, balance) about 0.8 M, the lean of the members leaning past max_lean "
+        "(about 70 of the 100 each step while the patrols turn) 0.6–0.7 M, the tread-ahead "
+        "test of `crowd/step_up.py` with its rays 0.44 M, the probes 0.25 M (nearly all "
+        "Chipmunk's query, all actors in one call of `_engine/_nearest.c`); around the "
+        "controller the solver's, the ledger's and the filter's rows about 0.8 M. The steps "
+        "where a turning member runs its own step cost more than the median step. Timed in "
+        "the crowd's steady state, its patrols turning (`playground/bench/crowd.py`, SETTLE).",
     ),
     Goal(
         "crowd_engine",
