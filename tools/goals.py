@@ -148,9 +148,7 @@ GOALS = (
         "×",
         "The split's batch read of every arbiter and its numpy sums come on top of the solver "
         "and filter rows above; a change of the arbiters' ids remakes the plan of which row "
-        "each arbiter's impulse goes to. The ratio is near the goal and moves from run to run: "
-        "0.39×, 0.41×, 0.45× and 0.59× in four runs on a quiet machine "
-        "(`benchmarks/split_pile.py --sizes 1000 --repeats 21`).",
+        "each arbiter's impulse goes to.",
     ),
     Goal(
         "field_1000",
@@ -181,8 +179,7 @@ GOALS = (
         "(about 70 of the 100 each step while the patrols turn) 0.6–0.7 M, the tread-ahead "
         "test of `crowd/step_up.py` with its rays 0.44 M, the probes 0.25 M (nearly all "
         "Chipmunk's query, all actors in one call of `_engine/_nearest.c`); around the "
-        "controller the solver's, the ledger's and the filter's rows about 0.8 M. The steps "
-        "where a turning member runs its own step cost more than the median step. Timed in "
+        "controller the solver's, the ledger's and the filter's rows about 0.8 M. Timed in "
         "the crowd's steady state, its patrols turning (`playground/bench/crowd.py`, SETTLE).",
     ),
     Goal(
